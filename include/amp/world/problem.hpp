@@ -1,0 +1,45 @@
+#pragma once
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "amp/core/space.hpp"
+#include "amp/world/environment.hpp"
+
+namespace amp::world {
+
+// Planner defaults a problem file may carry (`defaults:`); command-line options override them.
+struct ProblemDefaults {
+  std::string planner = "prm";
+  double time_limit_s = 30.0;
+  std::size_t node_limit = 20000;
+};
+
+// A loaded planning problem: space, world + robot, and the configurations to connect.
+struct Problem {
+  std::string name;
+  std::filesystem::path file;  // where it was loaded from (empty if built in code)
+  std::shared_ptr<const core::Space> space;
+  std::shared_ptr<const Environment> environment;
+  // Configurations to join: {start, goal} for a query, or the seed configurations of SPEC section 3.
+  std::vector<State> seeds;
+  ProblemDefaults defaults;
+
+  const State& start() const { return seeds.front(); }
+  const State& goal() const { return seeds.back(); }
+};
+
+// A world with its robot and the robot's configuration space, as a world parser builds them.
+struct LoadedWorld {
+  std::shared_ptr<const core::Space> space;
+  std::shared_ptr<const Environment> environment;
+};
+
+// Loads a problem file: YAML (docs/problem-format.md) or OMPL.app `.cfg`, chosen by extension.
+// Throws FileError naming the file and field on any fault, including start/goal out of bounds or
+// in collision.
+Problem load_problem(const std::filesystem::path& file);
+
+}  // namespace amp::world

@@ -1,0 +1,49 @@
+#pragma once
+#include <Eigen/Core>
+
+#include "amp/core/counters.hpp"
+#include "amp/core/state.hpp"
+
+namespace amp::world {
+
+// Result of a clearance query: distance from the robot to the nearest obstacle and the two closest
+// points (world frame; z = 0 for planar worlds). distance <= 0 when in collision (penetration depth
+// is not computed: the value is 0).
+struct Clearance {
+  double distance = 0.0;
+  Eigen::Vector3d robot_point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d obstacle_point = Eigen::Vector3d::Zero();
+};
+
+// Answers "is this configuration free?" and "how far is the nearest obstacle?". Every call is
+// counted in the run's Counters (CD calls are the papers' cost measure), hence the non-virtual
+// public functions around the private virtual ones. One checker per thread: implementations keep
+// scratch buffers so that a check never allocates; the world they read is shared and immutable.
+class ValidityChecker {
+ public:
+  explicit ValidityChecker(core::Counters& counters) : counters_(&counters) {}
+  virtual ~ValidityChecker() = default;
+  ValidityChecker(const ValidityChecker&) = delete;
+  ValidityChecker& operator=(const ValidityChecker&) = delete;
+
+  // Free of obstacles, of self-collision and inside the workspace. Counts one CD call.
+  bool is_valid(const State& s) const {
+    counters_->add_cd_call();
+    return check(s);
+  }
+  // Distance to the nearest obstacle. Counts one clearance call (not a CD call).
+  Clearance clearance(const State& s) const {
+    counters_->add_clearance_call();
+    return compute_clearance(s);
+  }
+
+  core::Counters& counters() const { return *counters_; }
+
+ private:
+  virtual bool check(const State& s) const = 0;
+  virtual Clearance compute_clearance(const State& s) const = 0;
+
+  core::Counters* counters_;
+};
+
+}  // namespace amp::world

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages AMP builds with, only those not yet installed.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libfcl-dev libccd-dev libassimp-dev libnanoflann-dev libcgal-dev libgmp-dev libmpfr-dev
+  libboost-dev libboost-math-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "Installing: ${missing[*]}"
+sudo_cmd=""
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd="sudo"; fi
+$sudo_cmd apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
