@@ -1,0 +1,33 @@
+#pragma once
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "amp/core/state.hpp"
+#include "amp/world/problem.hpp"
+
+namespace amp::viz {
+
+// A roadmap as drawn: vertices and edges (pairs of vertex indices).
+struct RoadmapDrawing {
+  std::vector<State> vertices;
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+};
+
+struct SceneOptions {
+  int width_px = 900;
+  std::string title;                          // defaults to the problem's name
+  const std::vector<State>* path = nullptr;   // drawn with robot footprints along it
+  const RoadmapDrawing* roadmap = nullptr;    // drawn under everything else
+  int footprints = 24;                        // robot footprints spread evenly along the path
+};
+
+// Draws a problem as SVG: the world (3-D worlds as their top view), the robot at start and goal, and
+// optionally a path and a roadmap, with a title and a legend.
+std::string render_scene(const world::Problem& problem, const SceneOptions& options);
+
+// Writes text to a file; throws FileError when it cannot.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace amp::viz

@@ -1,0 +1,63 @@
+#pragma once
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace amp::viz {
+
+// Paint for one SVG element.
+struct Style {
+  std::string fill = "none";
+  std::string stroke = "none";
+  double stroke_width = 1.0;  // pixels, whatever the zoom
+  double opacity = 1.0;
+  bool round_joins = false;
+};
+
+// An SVG document over a world rectangle: world coordinates in (y up), pixels out (y down). Stroke
+// widths are in pixels so that thin lines stay visible on large worlds.
+class SvgCanvas {
+ public:
+  // `world` is the drawn rectangle; `width_px` the image width (height follows the aspect ratio);
+  // `margin_px` around the world, `footer_px` extra space below it for a legend.
+  SvgCanvas(const Eigen::AlignedBox2d& world, int width_px, int margin_px = 24, int footer_px = 0);
+
+  int width_px() const { return width_; }
+  int height_px() const { return height_; }
+  double scale() const { return scale_; }
+  Eigen::Vector2d to_px(const Eigen::Vector2d& p) const;
+
+  void polygon(const std::vector<Eigen::Vector2d>& pts, const Style& s);
+  void polyline(const std::vector<Eigen::Vector2d>& pts, const Style& s);
+  void circle(const Eigen::Vector2d& c, double radius_world, const Style& s);
+  void dot(const Eigen::Vector2d& c, double radius_px, const Style& s);
+  void line(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Style& s);
+  void rect(const Eigen::AlignedBox2d& box, const Style& s);
+  // Text at a pixel position (for titles and legends).
+  void text_px(double x, double y, std::string_view text, int size_px, const std::string& color,
+               std::string_view anchor = "start", bool bold = false);
+  void rect_px(double x, double y, double w, double h, const Style& s);
+  // Opens/closes a <g> group (e.g. one per layer, with a class for readers of the SVG).
+  void begin_group(std::string_view id);
+  void end_group();
+
+  std::string str() const;
+
+ private:
+  void style_attrs(const Style& s);
+  Eigen::AlignedBox2d world_;
+  double scale_;
+  int margin_;
+  int width_;
+  int height_;
+  std::ostringstream body_;
+};
+
+// Escapes &, <, > and quotes for SVG/HTML text.
+std::string xml_escape(std::string_view s);
+
+}  // namespace amp::viz

@@ -1,0 +1,170 @@
+#include "amp/viz/scene_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "amp/core/error.hpp"
+#include "amp/viz/svg_canvas.hpp"
+#include "amp/world/occupancy_grid.hpp"
+
+namespace amp::viz {
+
+namespace {
+
+// A palette that reads on screen and in print (and for the colour-blind: blue/orange contrast).
+constexpr const char* kObstacleFill = "#3f4a5a";
+constexpr const char* kUnknownFill = "#a9b1bc";
+constexpr const char* kBoundsStroke = "#1f2933";
+constexpr const char* kStartColor = "#1b9e77";
+constexpr const char* kGoalColor = "#d95f02";
+constexpr const char* kPathColor = "#2563eb";
+constexpr const char* kRoadmapEdge = "#c3cad3";
+constexpr const char* kRoadmapNode = "#7b8794";
+constexpr const char* kText = "#1f2933";
+constexpr int kFooterPx = 44;
+
+void draw_shapes(SvgCanvas& c, const world::Shapes2d& shapes, const Style& s) {
+  for (const auto& p : shapes.polygons) c.polygon(p.vertices, s);
+  for (const auto& ci : shapes.circles) c.circle(ci.center, ci.radius, s);
+}
+
+void draw_grid(SvgCanvas& c, const world::OccupancyGrid& g) {
+  // Merge each row's blocked cells into runs: far fewer elements than one rect per cell.
+  const Style occupied{kObstacleFill, "none", 0, 1.0};
+  const Style unknown{kUnknownFill, "none", 0, 1.0};
+  for (int y = 0; y < g.height(); ++y) {
+    int x = 0;
+    while (x < g.width()) {
+      const world::CellState s = g.state(x, y);
+      int end = x + 1;
+      while (end < g.width() && g.state(end, y) == s) ++end;
+      if (s != world::CellState::kFree) {
+        Eigen::AlignedBox2d box = g.cell_box(x, y);
+        box.extend(g.cell_box(end - 1, y));
+        c.rect(box, s == world::CellState::kOccupied ? occupied : unknown);
+      }
+      x = end;
+    }
+  }
+}
+
+// States spread evenly (by space distance) along a path, endpoints included.
+std::vector<State> spread_along(const core::Space& space, const std::vector<State>& path, int count) {
+  std::vector<State> out;
+  if (path.empty() || count < 2) return path;
+  double total = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) total += space.distance(path[i - 1], path[i]);
+  if (total <= 0.0) return {path.front()};
+  const double step = total / (count - 1);
+  double along = 0.0, next = 0.0;
+  State s;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const double len = space.distance(path[i - 1], path[i]);
+    while (next <= along + len + 1e-12 && static_cast<int>(out.size()) < count) {
+      space.interpolate(path[i - 1], path[i], len > 0 ? (next - along) / len : 0.0, s);
+      out.push_back(s);
+      next += step;
+    }
+    along += len;
+  }
+  if (static_cast<int>(out.size()) < count) out.push_back(path.back());
+  return out;
+}
+
+// The reference point's trace, with states interpolated at the space resolution so arcs look smooth.
+std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<State>& path) {
+  std::vector<Eigen::Vector2d> pts;
+  State s;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const double d = p.space->distance(path[i], path[i + 1]);
+    const int n = std::clamp(static_cast<int>(std::ceil(d / p.space->resolution())), 1, 200);
+    for (int k = 0; k < n; ++k) {
+      p.space->interpolate(path[i], path[i + 1], static_cast<double>(k) / n, s);
+      pts.push_back(p.environment->reference_point(s).head<2>());
+    }
+  }
+  if (!path.empty()) pts.push_back(p.environment->reference_point(path.back()).head<2>());
+  return pts;
+}
+
+void legend(SvgCanvas& c, bool has_path, bool has_roadmap) {
+  double x = 24;
+  const double y = c.height_px() - kFooterPx / 2.0;
+  auto item = [&](const char* color, const char* label, double opacity) {
+    c.rect_px(x, y - 9, 14, 14, Style{color, "none", 0, opacity});
+    c.text_px(x + 20, y + 3, label, 13, kText);
+    x += 30 + 7.5 * std::string_view(label).size();
+  };
+  item(kObstacleFill, "obstacle", 1.0);
+  item(kStartColor, "start", 0.8);
+  item(kGoalColor, "goal", 0.8);
+  if (has_path) item(kPathColor, "path", 0.6);
+  if (has_roadmap) item(kRoadmapNode, "roadmap", 0.8);
+}
+
+}  // namespace
+
+std::string render_scene(const world::Problem& problem, const SceneOptions& options) {
+  const world::Environment& env = *problem.environment;
+  const Eigen::AlignedBox3d b3 = env.workspace_bounds();
+  const Eigen::AlignedBox2d bounds(b3.min().head<2>(), b3.max().head<2>());
+  SvgCanvas c(bounds, options.width_px, 28, kFooterPx);
+
+  const std::string title = options.title.empty() ? problem.name : options.title;
+  const std::string subtitle = std::string(problem.space->kind()) +
+                               (env.workspace_dimension() == 3 ? ", 3-D world seen from above" : "");
+  c.text_px(28, 19, title + "  (" + subtitle + ")", 15, kText, "start", true);
+
+  c.begin_group("workspace");
+  c.rect(bounds, Style{"#f7f8fa", kBoundsStroke, 1.5});
+  c.end_group();
+
+  if (options.roadmap != nullptr) {
+    c.begin_group("roadmap");
+    const auto& rm = *options.roadmap;
+    std::vector<Eigen::Vector2d> pts;
+    pts.reserve(rm.vertices.size());
+    for (const auto& v : rm.vertices) pts.push_back(env.reference_point(v).head<2>());
+    for (const auto& [a, b] : rm.edges) c.line(pts[a], pts[b], Style{"none", kRoadmapEdge, 0.7});
+    for (const auto& p : pts) c.dot(p, 1.6, Style{kRoadmapNode, "none", 0, 0.9});
+    c.end_group();
+  }
+
+  c.begin_group("obstacles");
+  const world::Outline outline = env.obstacle_outline();
+  if (outline.grid != nullptr) draw_grid(c, *outline.grid);
+  draw_shapes(c, outline.shapes, Style{kObstacleFill, kObstacleFill, 0.6, env.workspace_dimension() == 3 ? 0.55 : 1.0});
+  c.end_group();
+
+  if (options.path != nullptr && !options.path->empty()) {
+    c.begin_group("path");
+    for (const State& s : spread_along(*problem.space, *options.path, options.footprints)) {
+      draw_shapes(c, env.robot_outline(s), Style{kPathColor, kPathColor, 0.6, 0.18});
+    }
+    c.polyline(trace(problem, *options.path), Style{"none", kPathColor, 2.2, 0.95, true});
+    c.end_group();
+  }
+
+  c.begin_group("start-goal");
+  draw_shapes(c, env.robot_outline(problem.start()), Style{kStartColor, "#0f5c45", 1.2, 0.8});
+  draw_shapes(c, env.robot_outline(problem.goal()), Style{kGoalColor, "#8a3d00", 1.2, 0.8});
+  for (std::size_t i = 1; i + 1 < problem.seeds.size(); ++i) {
+    draw_shapes(c, env.robot_outline(problem.seeds[i]), Style{"#7570b3", "#3f3a80", 1.2, 0.8});
+  }
+  c.dot(env.reference_point(problem.start()).head<2>(), 3.0, Style{"#ffffff", "#0f5c45", 1.5});
+  c.dot(env.reference_point(problem.goal()).head<2>(), 3.0, Style{"#ffffff", "#8a3d00", 1.5});
+  c.end_group();
+
+  legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr);
+  return c.str();
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw FileError(path + ": cannot open for writing");
+  out << text;
+  if (!out) throw FileError(path + ": write failed");
+}
+
+}  // namespace amp::viz
