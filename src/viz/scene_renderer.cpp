@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "amp/core/error.hpp"
+#include "amp/roadmap/roadmap.hpp"
 #include "amp/viz/svg_canvas.hpp"
 #include "amp/world/occupancy_grid.hpp"
 
@@ -158,6 +159,17 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
 
   legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr);
   return c.str();
+}
+
+RoadmapDrawing drawing_of(const roadmap::Roadmap& roadmap) {
+  RoadmapDrawing d;
+  d.vertices = roadmap.states();
+  for (std::size_t v = 0; v < roadmap.vertex_count(); ++v) {
+    for (const auto& e : roadmap.edges(v)) {
+      if (v < e.to) d.edges.emplace_back(v, e.to);
+    }
+  }
+  return d;
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

@@ -7,6 +7,10 @@
 #include "amp/core/state.hpp"
 #include "amp/world/problem.hpp"
 
+namespace amp::roadmap {
+class Roadmap;
+}
+
 namespace amp::viz {
 
 // A roadmap as drawn: vertices and edges (pairs of vertex indices).
@@ -14,6 +18,9 @@ struct RoadmapDrawing {
   std::vector<State> vertices;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
 };
+
+// The vertices and (each undirected edge once) edges of a roadmap.
+RoadmapDrawing drawing_of(const roadmap::Roadmap& roadmap);
 
 struct SceneOptions {
   int width_px = 900;

@@ -1,0 +1,36 @@
+# AMP — set-up and everyday commands. `make demo` and `make test` work on a bare Debian 12 machine.
+BUILD     ?= build
+SAN_BUILD ?= build-sanitize
+JOBS      ?= $(shell nproc)
+DEMO_OUT  ?= out/demo
+
+.PHONY: all deps build demo test bench sanitize clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS)
+
+demo: build
+	./$(BUILD)/bin/amp demo --out $(DEMO_OUT)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+bench: build
+	@for b in $(BUILD)/benchmarks/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2 || exit 1; done
+
+# Debug build with AddressSanitizer + UndefinedBehaviorSanitizer; runs the fast unit tests (the
+# planners-on-bundled-problems tests, label `problems`, are left to the Release run).
+sanitize: deps
+	@cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DAMP_SANITIZE=ON -DAMP_BUILD_BENCHMARKS=OFF >/dev/null
+	@cmake --build $(SAN_BUILD) -j$(JOBS)
+	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j$(JOBS) -LE problems
+
+clean:
+	rm -rf $(BUILD) $(SAN_BUILD)

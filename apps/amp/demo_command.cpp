@@ -1,0 +1,89 @@
+// `amp demo`: the README's main job. Plans every bundled problem and draws the results; later
+// capabilities (benchmark report, UAS, PRM-C/G/L, navigation) add their reduced experiments here.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "amp/core/path_file.hpp"
+#include "amp/roadmap/run.hpp"
+#include "amp/viz/scene_renderer.hpp"
+#include "amp/world/problem.hpp"
+#include "cli_util.hpp"
+#include "commands.hpp"
+
+namespace amp::cli {
+
+namespace {
+
+// The bundled problems of the foundation, in the order the README lists them.
+constexpr const char* kDemoProblems[] = {
+    "maze.yaml",  "l-tunnel.yaml", "hook.yaml",        "walls.yaml",          "linkage.yaml",
+    "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml",
+};
+
+struct DemoOptions {
+  std::string out = "out/demo";
+  std::uint64_t seed = 1;
+  double time_limit = 60.0;
+};
+
+int run_demo(const DemoOptions& o) {
+  const std::filesystem::path out = o.out;
+  std::error_code ec;
+  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec)) {
+    throw Error("--out: '" + out.string() + "' is a file, expected a directory");
+  }
+  std::filesystem::create_directories(out, ec);
+  if (ec) throw Error("--out: cannot create directory '" + out.string() + "': " + ec.message());
+  const std::filesystem::path dir = problems_dir();
+
+  std::printf("AMP demo: PRM on the bundled problems (seed %llu); pictures and paths go to %s/\n\n",
+              static_cast<unsigned long long>(o.seed), out.string().c_str());
+  std::printf("%-16s %-8s %-10s %10s %11s %8s %12s\n", "problem", "space", "status", "time [s]", "CD calls",
+              "nodes", "path length");
+  int failures = 0;
+  for (const char* name : kDemoProblems) {
+    const world::Problem problem = world::load_problem(dir / name);
+    const roadmap::RunOutcome run = roadmap::execute_run(problem, problem.defaults.planner, {}, o.seed,
+                                                         std::min(o.time_limit, problem.defaults.time_limit_s),
+                                                         problem.defaults.node_limit);
+    const auto& r = run.record;
+    const bool solved = r.status == core::PlanStatus::kSolved;
+    failures += solved ? 0 : 1;
+    std::printf("%-16s %-8s %-10s %10.3f %11llu %8llu %12.2f\n", problem.name.c_str(),
+                std::string(problem.space->kind()).c_str(), std::string(core::to_string(r.status)).c_str(),
+                r.wall_time_s, static_cast<unsigned long long>(r.cd_calls()),
+                static_cast<unsigned long long>(r.nodes), r.path_length);
+    const std::string stem = std::filesystem::path(name).stem().string();
+    viz::RoadmapDrawing drawing;
+    viz::SceneOptions scene;
+    scene.title = problem.name + " — " + problem.defaults.planner + ", seed " + std::to_string(o.seed);
+    if (solved) {
+      scene.path = &run.path;
+      viz::write_text_file((out / (stem + ".path")).string(), core::format_path(*problem.space, run.path,
+                                                                               core::PathFormat::kText));
+    }
+    if (run.roadmap && problem.environment->workspace_dimension() == 2) {
+      drawing = viz::drawing_of(*run.roadmap);
+      scene.roadmap = &drawing;
+    }
+    viz::write_text_file((out / (stem + ".svg")).string(), viz::render_scene(problem, scene));
+  }
+  std::printf("\n%d of %zu problems solved; open %s/*.svg in a browser.\n",
+              static_cast<int>(std::size(kDemoProblems)) - failures, std::size(kDemoProblems), out.string().c_str());
+  return failures == 0 ? kExitOk : kExitNotSolved;
+}
+
+}  // namespace
+
+void add_demo_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<DemoOptions>();
+  CLI::App* cmd = app.add_subcommand("demo", "Run the demonstration: plan every bundled problem, draw the results");
+  cmd->add_option("--out", o->out, "Output directory [out/demo]");
+  cmd->add_option("--seed", o->seed, "Random seed [1]");
+  cmd->add_option("--time-limit", o->time_limit, "Time limit per problem in seconds [60]")->check(CLI::PositiveNumber);
+  cmd->callback([o, &exit_code] { exit_code = run_demo(*o); });
+}
+
+}  // namespace amp::cli

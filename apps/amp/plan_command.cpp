@@ -1,0 +1,100 @@
+// `amp plan`: one planner run on one problem; prints the run record, writes the path.
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "amp/bench/record_format.hpp"
+#include "amp/core/path_file.hpp"
+#include "amp/roadmap/run.hpp"
+#include "amp/viz/scene_renderer.hpp"
+#include "amp/world/problem.hpp"
+#include "cli_util.hpp"
+#include "commands.hpp"
+
+namespace amp::cli {
+
+namespace {
+
+struct PlanOptions {
+  std::string problem;
+  std::string planner;
+  std::vector<std::string> params;
+  std::uint64_t seed = 1;
+  double time_limit = 0.0;  // 0: the problem's default
+  long long node_limit = 0;
+  std::string out;
+  std::string format = "path";
+  std::string svg;
+  bool roadmap = false;
+  bool json = false;
+  bool force = false;
+};
+
+int run_plan(const PlanOptions& o) {
+  const core::PathFormat format = core::path_format_from_string(o.format);
+  if (!o.out.empty()) check_writable(o.out, o.force, "--out");
+  if (!o.svg.empty()) check_writable(o.svg, o.force, "--svg");
+  const world::Problem problem = world::load_problem(o.problem);
+  const std::string planner = o.planner.empty() ? problem.defaults.planner : o.planner;
+  const double time_limit = o.time_limit > 0.0 ? o.time_limit : problem.defaults.time_limit_s;
+  const std::size_t node_limit = o.node_limit > 0 ? static_cast<std::size_t>(o.node_limit) : problem.defaults.node_limit;
+
+  const roadmap::RunOutcome run =
+      roadmap::execute_run(problem, planner, parse_params(o.params), o.seed, time_limit, node_limit);
+
+  if (o.json) {
+    std::cout << bench::to_json(run.record).dump(2) << '\n';
+  } else {
+    std::cout << bench::format_table(run.record);
+  }
+  const bool solved = run.record.status == core::PlanStatus::kSolved;
+  if (solved && !o.out.empty()) {
+    viz::write_text_file(o.out, core::format_path(*problem.space, run.path, format));
+    if (!o.json) std::cout << "path written to " << o.out << '\n';
+  }
+  if (!o.svg.empty()) {
+    viz::RoadmapDrawing drawing;
+    if (o.roadmap && run.roadmap) drawing = viz::drawing_of(*run.roadmap);
+    viz::SceneOptions scene;
+    scene.path = solved ? &run.path : nullptr;
+    scene.roadmap = o.roadmap && run.roadmap ? &drawing : nullptr;
+    scene.title = problem.name + " — " + planner + ", seed " + std::to_string(o.seed);
+    viz::write_text_file(o.svg, viz::render_scene(problem, scene));
+    if (!o.json) std::cout << "picture written to " << o.svg << '\n';
+  }
+  if (run.record.status == core::PlanStatus::kError) {
+    throw Error(planner + " failed: " + run.record.message);
+  }
+  if (!solved) {
+    std::cerr << "amp: no solution: " << core::to_string(run.record.status) << " (time limit " << time_limit
+              << " s, node limit " << node_limit << ")\n";
+    return kExitNotSolved;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_plan_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<PlanOptions>();
+  CLI::App* cmd = app.add_subcommand("plan", "Solve one problem with one planner; print the run record");
+  cmd->add_option("problem", o->problem, "Problem file (.yaml or OMPL.app .cfg)")->required();
+  cmd->add_option("--planner", o->planner, "Planner name (default: the problem's, else prm)");
+  cmd->add_option("--param", o->params, "Planner parameter name=value (repeatable), e.g. --param k=15");
+  cmd->add_option("--seed", o->seed, "Random seed [1]");
+  cmd->add_option("--time-limit", o->time_limit, "Time limit in seconds (default: the problem's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--node-limit", o->node_limit, "Roadmap node limit (default: the problem's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--out", o->out, "Write the path to this file");
+  cmd->add_option("--format", o->format, "Path format: path (OMPL.app .path) or yaml [path]")
+      ->check(CLI::IsMember({"path", "yaml"}));
+  cmd->add_option("--svg", o->svg, "Draw the problem and the path to this SVG file");
+  cmd->add_flag("--roadmap", o->roadmap, "With --svg: draw the roadmap too");
+  cmd->add_flag("--json", o->json, "Print the run record as JSON");
+  cmd->add_flag("--force", o->force, "Overwrite existing output files");
+  cmd->callback([o, &exit_code] { exit_code = run_plan(*o); });
+}
+
+}  // namespace amp::cli
