@@ -1,0 +1,75 @@
+#pragma once
+#include <memory>
+#include <mutex>
+
+#include "amp/world/environment.hpp"
+#include "amp/world/spatial_robot.hpp"
+#include "amp/world/spatial_world.hpp"
+
+namespace amp::world {
+
+// How a 3-D robot must stay inside the workspace bounds.
+enum class SpatialBoundsCheck {
+  kRobotAabb,       // every part's world-frame box (exact for boxes, spheres, cylinders; the rotated
+                    // local box for meshes, hence conservative) lies inside: our YAML problems
+  kReferencePoint,  // only the reference point (body origin) must lie inside: OMPL.app's rule,
+                    // used for its .cfg problems, whose robots may poke out of the volume
+};
+
+// A robot's validity checker in an FCL world. It owns one FCL collision object per robot part
+// (sharing the geometry built once by SpatialRobot), sets their transforms per check and queries
+// the world's broad phase with early exit; request/result objects are reused, so a check never
+// allocates. One per thread.
+class SpatialChecker final : public ValidityChecker {
+ public:
+  SpatialChecker(std::shared_ptr<const SpatialWorld> world, SpatialRobot robot, SpatialBoundsCheck bounds_check,
+                 core::Counters& counters);
+  ~SpatialChecker() override;
+
+ private:
+  struct Scratch;  // FCL objects and reused query buffers
+
+  bool check(const State& s) const override;
+  Clearance compute_clearance(const State& s) const override;
+  // Places the robot's objects at state s.
+  void place(const State& s) const;
+  bool inside_bounds(const State& s) const;
+
+  std::shared_ptr<const SpatialWorld> world_;
+  SpatialRobot robot_;
+  SpatialBoundsCheck bounds_check_;
+  std::unique_ptr<Scratch> scratch_;
+};
+
+// A SpatialWorld with a SpatialRobot in it.
+class SpatialEnvironment final : public Environment {
+ public:
+  SpatialEnvironment(std::shared_ptr<const SpatialWorld> world, SpatialRobot robot,
+                     SpatialBoundsCheck bounds_check = SpatialBoundsCheck::kRobotAabb);
+
+  int workspace_dimension() const override { return 3; }
+  std::unique_ptr<ValidityChecker> make_checker(core::Counters& counters) const override;
+  Eigen::AlignedBox3d workspace_bounds() const override { return world_->bounds(); }
+  // Top view: boxes and cylinders as projected convex hulls, spheres as circles, meshes as
+  // their upward-facing triangles of non-zero projected area.
+  Outline obstacle_outline() const override;
+  // Top view of the robot: meshes as one convex hull each (cheap enough to draw along paths).
+  Shapes2d robot_outline(const State& s) const override;
+  Eigen::Vector3d reference_point(const State& s) const override { return robot_.reference_point(s); }
+  double robot_min_diameter() const override { return robot_.min_diameter(); }
+  double robot_radius() const override { return robot_.radius(); }
+
+  const SpatialWorld& world() const { return *world_; }
+  const SpatialRobot& robot() const { return robot_; }
+  SpatialBoundsCheck bounds_check() const { return bounds_check_; }
+
+ private:
+  std::shared_ptr<const SpatialWorld> world_;
+  SpatialRobot robot_;
+  SpatialBoundsCheck bounds_check_;
+  // FCL's CollisionObject constructor writes into the shared geometry (its local AABB), so
+  // checkers are made one at a time.
+  mutable std::mutex make_mutex_;
+};
+
+}  // namespace amp::world

@@ -1,0 +1,82 @@
+#include "amp/world/mesh_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "amp/core/error.hpp"
+
+namespace amp::world {
+namespace {
+
+const std::string kMeshes = std::string(AMP_SOURCE_DIR) + "/tests/data/meshes/";
+
+void expect_bounds(const TriangleMesh& m, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  const Eigen::AlignedBox3d b = mesh_bounds(m);
+  EXPECT_TRUE(b.min().isApprox(lo, 1e-9)) << b.min().transpose();
+  EXPECT_TRUE(b.max().isApprox(hi, 1e-9)) << b.max().transpose();
+}
+
+TEST(MeshLoader, ObjQuadsAreTriangulated) {
+  const TriangleMesh m = load_mesh(kMeshes + "box.obj");
+  EXPECT_EQ(m.vertices.size(), 8u);
+  EXPECT_EQ(m.triangles.size(), 12u);
+  expect_bounds(m, {0, 0, 0}, {2, 1, 0.5});
+}
+
+TEST(MeshLoader, StlVerticesAreJoined) {
+  const TriangleMesh m = load_mesh(kMeshes + "tetra.stl");
+  EXPECT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(m.triangles.size(), 4u);
+  expect_bounds(m, {0, 0, 0}, {1, 1, 1});
+}
+
+TEST(MeshLoader, Ply) {
+  const TriangleMesh m = load_mesh(kMeshes + "tetra.ply");
+  EXPECT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(m.triangles.size(), 4u);
+  expect_bounds(m, {0, 0, 0}, {3, 3, 3});
+  EXPECT_TRUE(vertex_mean(m).isApprox(Eigen::Vector3d(0.75, 0.75, 0.75)));
+}
+
+TEST(MeshLoader, ColladaNodeTransformsAndYUpAreApplied) {
+  // Box x 2, up 3, depth 1 under nested nodes translating by (10, 0, 0) and 5 upwards (Y-up file).
+  const TriangleMesh m = load_mesh(kMeshes + "box_yup.dae");
+  EXPECT_EQ(m.vertices.size(), 8u);
+  EXPECT_EQ(m.triangles.size(), 12u);
+  expect_bounds(m, {10, -1, 5}, {12, 0, 8});
+}
+
+TEST(MeshLoader, ExplicitUpAxisOverridesTheFile) {
+  expect_bounds(load_mesh(kMeshes + "box_yup.dae", UpAxis::kZ), {10, 5, 0}, {12, 8, 1});
+  expect_bounds(load_mesh(kMeshes + "box.obj", UpAxis::kY), {0, -0.5, 0}, {2, 0, 1});
+}
+
+TEST(MeshLoader, TrianglesKeepTheirOrientationUnderYUp) {
+  // A proper rotation keeps outward normals outward: the signed volume stays positive.
+  const TriangleMesh m = load_mesh(kMeshes + "box_yup.dae");
+  double volume = 0.0;
+  for (const Eigen::Vector3i& t : m.triangles) {
+    volume += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]])) / 6.0;
+  }
+  EXPECT_NEAR(volume, 6.0, 1e-9);
+}
+
+TEST(MeshLoader, UnreadableFileNamesTheFile) {
+  try {
+    load_mesh(kMeshes + "not_a_mesh.stl");
+    FAIL() << "expected FileError";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("not_a_mesh.stl"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(load_mesh(kMeshes + "missing.obj"), FileError);
+}
+
+TEST(MeshLoader, ParsesUpAxis) {
+  EXPECT_EQ(parse_up_axis("y"), UpAxis::kY);
+  EXPECT_EQ(parse_up_axis("z"), UpAxis::kZ);
+  EXPECT_THROW(parse_up_axis("x"), ParameterError);
+}
+
+}  // namespace
+}  // namespace amp::world

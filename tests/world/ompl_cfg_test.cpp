@@ -1,0 +1,161 @@
+#include "amp/world/ompl_cfg.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/world/spatial_environment.hpp"
+
+namespace amp::world {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kProblems = fs::path(AMP_SOURCE_DIR) / "problems/ompl";
+
+// A scratch directory per test holding hand-written .cfg and mesh files.
+class OmplCfg : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(AMP_BINARY_DIR) / "ompl_cfg_test" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::create_directories(dir_);
+  }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  // An OBJ prism of `polygon` (counter-clockwise, convex: fan caps) between z = 0 and z = h.
+  void write_prism(const std::string& name, const std::vector<Eigen::Vector2d>& polygon, double h) {
+    std::string obj;
+    const int n = static_cast<int>(polygon.size());
+    for (double z : {0.0, h}) {
+      for (const auto& p : polygon) obj += "v " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(z) + "\n";
+    }
+    auto f = [&](int a, int b, int c) {
+      obj += "f " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " + std::to_string(c + 1) + "\n";
+    };
+    for (int i = 1; i + 1 < n; ++i) {
+      f(0, i + 1, i);          // bottom, facing down
+      f(n, n + i, n + i + 1);  // top, facing up
+    }
+    for (int i = 0; i < n; ++i) {
+      const int j = (i + 1) % n;
+      f(i, j, n + j);
+      f(i, n + j, n + i);
+    }
+    write(name, obj);
+  }
+  fs::path dir_;
+};
+
+TEST_F(OmplCfg, ThreeDimensionalProblemValues) {
+  const Problem p = load_ompl_cfg(kProblems / "cage_window.cfg");
+  EXPECT_EQ(p.name, "CageWindow");
+  ASSERT_EQ(p.space->kind(), "se3");
+  ASSERT_EQ(p.seeds.size(), 2u);
+  // start: (2.5, 5, 5), 90 degrees about z.
+  EXPECT_NEAR(p.start()[0], 2.5, 1e-12);
+  EXPECT_NEAR(p.start()[2], 5.0, 1e-12);
+  EXPECT_NEAR(p.start()[5], std::sin(std::numbers::pi / 4), 1e-7);
+  EXPECT_NEAR(p.start()[6], std::cos(std::numbers::pi / 4), 1e-7);
+  EXPECT_NEAR(p.goal()[6], 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(p.defaults.time_limit_s, 20.0);
+  EXPECT_EQ(p.environment->workspace_dimension(), 3);
+  EXPECT_TRUE(p.environment->workspace_bounds().max().isApprox(Eigen::Vector3d(10, 10, 10)));
+  // The rod (1.2 x 0.3 x 0.3 at (5, 5, 5) in its file) is re-centred on its vertex mean.
+  EXPECT_NEAR(p.environment->robot_radius(), std::sqrt(0.36 + 0.0225 + 0.0225), 1e-6);  // assimp reads floats
+  core::Counters counters;
+  auto checker = p.environment->make_checker(counters);
+  EXPECT_TRUE(checker->is_valid(p.start()));
+  EXPECT_TRUE(checker->is_valid(p.goal()));
+  State window = p.goal();
+  window[0] = 5.0;  // through the window, lengthwise
+  EXPECT_TRUE(checker->is_valid(window));
+  window[2] = 7.0;  // into the wall above it
+  EXPECT_FALSE(checker->is_valid(window));
+}
+
+TEST_F(OmplCfg, TwoDimensionalProblemRunsOnThePlanarChecker) {
+  const Problem p = load_ompl_cfg(kProblems / "gap_planar.cfg");
+  ASSERT_EQ(p.space->kind(), "se2");
+  EXPECT_EQ(p.environment->workspace_dimension(), 2);
+  EXPECT_EQ(p.defaults.planner, "prm");
+  EXPECT_DOUBLE_EQ(p.defaults.time_limit_s, 10.0);
+  EXPECT_NEAR(p.goal()[2], 1.5707963, 1e-12);
+  // Four obstacle prisms placed by node matrices: two caps' triangles each.
+  EXPECT_EQ(p.environment->obstacle_outline().shapes.polygons.size(), 8u);
+  core::Counters counters;
+  auto checker = p.environment->make_checker(counters);
+  EXPECT_TRUE(checker->is_valid(p.start()));
+  EXPECT_TRUE(checker->is_valid(p.goal()));
+  State s = p.start();
+  s << 0.0, 5.0, 0.0;  // on the wall
+  EXPECT_FALSE(checker->is_valid(s));
+  s << 0.0, 0.0, 0.0;  // in the gap (the L spans 1.2 across its long side, the gap 1.6)
+  EXPECT_TRUE(checker->is_valid(s));
+}
+
+TEST_F(OmplCfg, ProjectionOfAnExtrudedPrismIsThePolygon) {
+  const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
+  write_prism("pentagon.obj", pentagon, 0.5);
+  write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
+  const fs::path cfg = write("p.cfg", "[problem]\nrobot = robot.obj\nworld = pentagon.obj\nstart.x = -5\nstart.y = -5\n"
+                                      "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
+                                      "volume.max.x = 10\nvolume.max.y = 10\n");
+  const Problem p = load_ompl_cfg(cfg);
+  const Shapes2d obstacles = p.environment->obstacle_outline().shapes;
+  ASSERT_EQ(obstacles.polygons.size(), 3u);  // the top cap's fan only
+  double area = 0.0;
+  for (const Polygon& t : obstacles.polygons) {
+    ASSERT_EQ(t.vertices.size(), 3u);
+    const Eigen::Vector2d a = t.vertices[1] - t.vertices[0], b = t.vertices[2] - t.vertices[0];
+    area += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    for (const auto& v : t.vertices) {
+      bool is_corner = false;
+      for (const auto& c : pentagon) is_corner = is_corner || (v - c).norm() < 1e-6;
+      EXPECT_TRUE(is_corner);
+    }
+  }
+  double shoelace = 0.0;
+  for (std::size_t i = 0; i < pentagon.size(); ++i) {
+    const auto& a = pentagon[i];
+    const auto& b = pentagon[(i + 1) % pentagon.size()];
+    shoelace += 0.5 * (a.x() * b.y() - b.x() * a.y());
+  }
+  EXPECT_NEAR(area, shoelace, 1e-6);  // counter-clockwise triangles covering exactly the pentagon
+  EXPECT_EQ(p.name, "p");
+}
+
+TEST_F(OmplCfg, ErrorsNameTheFileAndKey) {
+  write("robot.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  auto expect_error = [&](const std::string& text, const std::string& needle) {
+    const fs::path cfg = write("bad.cfg", text);
+    try {
+      load_ompl_cfg(cfg);
+      ADD_FAILURE() << "expected FileError for " << needle;
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.cfg"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  const std::string good = "robot = robot.obj\nworld = robot.obj\nstart.x = 0\nstart.y = 0\ngoal.x = 1\ngoal.y = 1\n";
+  expect_error("[problem]\nthis line is wrong\n", ":2:");
+  expect_error("[problem\n", "section");
+  expect_error("start.x = 1\n", "outside");
+  expect_error("[solver]\nplanner = prm\n", "[problem]");
+  expect_error("[problem]\nworld = robot.obj\nstart.x = 0\n", "robot: missing key");
+  expect_error("[problem]\n" + good + "start.theta = abc\n", "start.theta: expected a number");
+  expect_error("[problem]\nrobot = nothing.obj\nworld = robot.obj\n", "robot: no such file");
+  write("broken.stl", "garbage");
+  expect_error("[problem]\nrobot = broken.stl\nworld = robot.obj\n", "robot: ");
+  expect_error("[problem]\n" + good + "volume.min.x = 5\nvolume.max.x = 1\nvolume.min.y = 0\nvolume.max.y = 1\n",
+               "volume.max.x");
+  expect_error("[problem]\nrobot = robot.obj\nworld = robot.obj\nstart.x = 0\nstart.y = 0\ngoal.x = 1\n", "goal.y");
+  EXPECT_THROW(load_ompl_cfg(dir_ / "missing.cfg"), FileError);
+}
+
+}  // namespace
+}  // namespace amp::world
