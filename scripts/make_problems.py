@@ -58,9 +58,10 @@ def write(name, header, doc):
     print("wrote", path)
 
 
-def maze_walls(cols, rows, cell, x0, y0, wall, rng, narrow_gaps):
+def maze_walls(cols, rows, cell, x0, y0, wall, rng, narrow_gaps, door=None):
     """A perfect maze (randomised depth-first search) of cols x rows cells as thin wall rectangles.
-    `narrow_gaps` extra walls get a gap narrower than the robot: tempting shortcuts that cannot be used."""
+    `narrow_gaps` extra walls get a gap narrower than the robot: tempting shortcuts that cannot be used.
+    With `door`, the maze's open connections are doors of that width instead of whole open walls."""
     visited = [[False] * rows for _ in range(cols)]
     open_e = set()  # (c, r, 'E'|'N') walls removed
     stack = [(0, rng.randrange(rows))]
@@ -93,6 +94,14 @@ def maze_walls(cols, rows, cell, x0, y0, wall, rng, narrow_gaps):
         for r in range(rows):
             x, y = x0 + c * cell, y0 + r * cell
             # East wall of (c, r) and north wall of (c, r); the outer boundary is built below.
+            if c < cols - 1 and (c, r, "E") in open_e and door:
+                xe, mid = x + cell, y + cell / 2
+                obstacles.append(rect(xe - h, y + h, xe + h, mid - door / 2))
+                obstacles.append(rect(xe - h, mid + door / 2, xe + h, y + cell - h))
+            if r < rows - 1 and (c, r, "N") in open_e and door:
+                yn, mid = y + cell, x + cell / 2
+                obstacles.append(rect(x + h, yn - h, mid - door / 2, yn + h))
+                obstacles.append(rect(mid + door / 2, yn - h, x + cell - h, yn + h))
             if c < cols - 1 and (c, r, "E") not in open_e:
                 xe = x + cell
                 if (c, r, "E") in narrow:
@@ -112,14 +121,14 @@ def maze_walls(cols, rows, cell, x0, y0, wall, rng, narrow_gaps):
     return obstacles
 
 
-narrow_gap = 1.2  # narrower than the Maze robot (width 1.6)
+narrow_gap = 1.1  # narrower than the Maze robot (width 1.4)
 
 
 def make_maze():
     rng = random.Random(20261125)
     cols, rows, cell, wall = 6, 5, 8.0, 1.0
     x0, y0 = 24.0, 4.0  # maze block spans x 24..72, y 4..44
-    obstacles = maze_walls(cols, rows, cell, x0, y0, wall, rng, narrow_gaps=5)
+    obstacles = maze_walls(cols, rows, cell, x0, y0, wall, rng, narrow_gaps=6, door=2.6)
     h = wall / 2
     x1, y1 = x0 + cols * cell, y0 + rows * cell
     # West and east boundary walls of the maze block, each with one entrance cell open.
@@ -138,7 +147,7 @@ def make_maze():
         "bounds": {"min": [0, 0], "max": [96, 48]},
         "resolution": 0.002,
         "world": {"obstacles": obstacles},
-        "robot": {"type": "rigid2d", "shapes": [rect(-2.2, -0.8, 2.2, 0.8)]},
+        "robot": {"type": "rigid2d", "shapes": [rect(-2.0, -0.7, 2.0, 0.7)]},
         "start": [8.0, 24.0, 0.0],
         "goal": [88.0, 24.0, 1.5708],
         "defaults": {"planner": "prm", "time_limit": 60, "node_limit": 50000},
@@ -148,7 +157,7 @@ def make_maze():
 def make_l_tunnel():
     obstacles = [
         rect(0, 22, 40, 100),    # west block
-        rect(49, 0, 86, 61),     # south-east block
+        rect(48.6, 0, 86, 61.4),     # south-east block
         rect(40, 70, 86, 100),   # north block
     ]
     l_robot = [rect(-1.0, -1.0, 7.0, 1.0), rect(-1.0, 1.0, 1.0, 7.0)]
@@ -159,7 +168,7 @@ def make_l_tunnel():
         "world": {"obstacles": obstacles},
         "robot": {"type": "rigid2d", "shapes": l_robot},
         "start": [12.0, 10.0, 0.0],
-        "goal": [93.0, 85.0, 1.5708],
+        "goal": [94.0, 78.0, 1.5708],
         "defaults": {"planner": "prm", "time_limit": 60, "node_limit": 50000},
     })
 
@@ -230,7 +239,7 @@ def make_walls():
 
 def make_linkage():
     obstacles = [
-        rect(-2, 9, 3.5, 11),      # shelf above the base, left of the slot
+        rect(-2, 9, 3.0, 11),      # shelf above the base, left of the slot
         rect(6.0, 9, 14, 11),      # shelf right of the slot
         {"circle": {"center": [-7.5, 4.0], "radius": 1.5}},
         rect(8.0, 1.5, 10.0, 6.0),  # post in the lower right
@@ -244,8 +253,8 @@ def make_linkage():
                   "links": [{"length": 4.0, "width": 0.8}, {"length": 3.5, "width": 0.7},
                             {"length": 3.0, "width": 0.6}, {"length": 2.5, "width": 0.5}],
                   "limits": [[-0.2, 3.34], [-2.6, 2.6], [-2.6, 2.6], [-2.6, 2.6]]},
-        "start": [2.9, 0.3, 0.4, 0.3],
-        "goal": [1.40, -0.2, 0.15, 0.05],
+        "start": [3.0, 0.0, 0.0, 0.0],
+        "goal": [1.1, 0.1, 0.1, 0.1],
         "defaults": {"planner": "prm", "time_limit": 60, "node_limit": 50000},
     })
 
@@ -333,7 +342,7 @@ def make_walls3d():
     rng = random.Random(5)
     L, W, H = 40.0, 16.0, 16.0
     obstacles = []
-    hole = 3.0
+    hole = 3.3
     for x in (10.0, 20.0, 30.0):
         cy, cz = rng.uniform(3, W - 3), rng.uniform(3, H - 3)
         t = 0.5

@@ -1,0 +1,34 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "amp/core/run_record.hpp"
+#include "amp/roadmap/parameters.hpp"
+#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/roadmap.hpp"
+#include "amp/world/problem.hpp"
+
+namespace amp::roadmap {
+
+struct RunOutcome {
+  core::RunRecord record;
+  std::vector<State> path;
+  std::shared_ptr<const Roadmap> roadmap;  // may be null
+};
+
+// One run of a planner on a problem, as `amp plan` and `amp bench` do it: fresh counters and checker,
+// Rng(seed), a StopCondition(time_limit_s, node_limit), the plan timed, the record filled (path
+// length, and path clearance = the smallest clearance over the path's states sampled at the space's
+// resolution, measured with a separate checker so that it costs the run nothing).
+// A planner that throws gives status kError with its message; an unknown planner, a bad parameter
+// (ParameterError) or a bad seed (InvalidSeedError) is the user's error and is rethrown.
+RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const ParamMap& params,
+                       std::uint64_t seed, double time_limit_s, std::size_t node_limit,
+                       const PlannerRegistry& registry = builtin_planners());
+
+// Smallest clearance along `path`, sampling each segment at the space's resolution; 0 for an empty path.
+double path_clearance(const core::Space& space, const world::ValidityChecker& checker, const std::vector<State>& path);
+
+}  // namespace amp::roadmap

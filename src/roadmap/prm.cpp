@@ -1,0 +1,223 @@
+#include "amp/roadmap/prm.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/roadmap/astar.hpp"
+#include "amp/roadmap/kd_tree_neighbors.hpp"
+#include "amp/roadmap/k_nearest_connection.hpp"
+#include "amp/roadmap/path_smoothing.hpp"
+#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/straight_line_planner.hpp"
+#include "amp/roadmap/uniform_sampler.hpp"
+
+namespace amp::roadmap {
+
+namespace {
+
+// Upper bound on the up-front reservation: a node limit of 10^9 must not reserve 10^9 states.
+constexpr std::size_t kMaxReservedNodes = 200000;
+constexpr int kMaxK = 1000;
+
+// One PRM run: the roadmap and the parts that grow it.
+class PrmRun {
+ public:
+  PrmRun(const PrmSettings& settings, const PrmParts& parts, const PlanningContext& ctx,
+         const core::StopCondition& stop)
+      : settings_(settings), ctx_(ctx), stop_(stop), roadmap_(std::make_shared<Roadmap>()) {
+    sampler_ = parts.sampler ? parts.sampler(ctx) : std::make_unique<UniformSampler>(ctx.space, ctx.checker);
+    local_planner_ = parts.local_planner ? parts.local_planner(ctx)
+                                         : std::make_unique<StraightLinePlanner>(ctx.space, ctx.checker);
+    if (parts.connection) {
+      connection_ = parts.connection(ctx);
+    } else {
+      auto nn = std::make_unique<KdTreeNeighbors>(ctx.space, &ctx.checker.counters());
+      nn->reserve(std::min(stop.node_limit(), kMaxReservedNodes));
+      connection_ = std::make_unique<KNearestConnection>(std::move(nn), static_cast<std::size_t>(settings.k));
+    }
+    const std::size_t k = static_cast<std::size_t>(settings.k);
+    roadmap_->reserve(std::min(stop.node_limit(), kMaxReservedNodes), 2 * k);
+    neighbors_.reserve(k);
+  }
+
+  PlanResult run(core::Rng& rng) {
+    for (const State& s : ctx_.seeds) seed_ids_.push_back(insert(s));
+    State q;
+    PlanResult result;
+    for (;;) {
+      if (seeds_connected() && find_path(result.path)) {
+        result.status = core::PlanStatus::kSolved;
+        break;
+      }
+      const core::StopReason reason = stop_.check(roadmap_->vertex_count());
+      if (reason != core::StopReason::kNone) {
+        result.status = status_for(reason);
+        break;
+      }
+      if (sampler_->sample(rng, q)) {
+        insert(q);
+      } else {
+        ++failed_samples_;
+      }
+    }
+    if (result.status == core::PlanStatus::kSolved && settings_.smooth) smooth(rng, result.path);
+    result.nodes = roadmap_->vertex_count();
+    result.edges = roadmap_->edge_count();
+    result.components = roadmap_->component_count();
+    result.extra["failed_samples"] = static_cast<double>(failed_samples_);
+    if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_);
+    if (settings_.smooth) result.extra["shortcuts"] = static_cast<double>(shortcuts_);
+    result.roadmap = roadmap_;
+    return result;
+  }
+
+ private:
+  // Adds q and tries its connection candidates (lazy: adds them unchecked).
+  VertexId insert(const State& q) {
+    const VertexId v = roadmap_->add_vertex(q);
+    connection_->candidates(*roadmap_, v, neighbors_);
+    for (const Neighbor& n : neighbors_) {
+      if (settings_.skip_same_component && roadmap_->same_component(v, n.index)) continue;
+      if (settings_.lazy) {
+        roadmap_->add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
+      } else if (local_planner_->connect(q, roadmap_->state(n.index))) {
+        roadmap_->add_edge(v, n.index, n.distance);
+      }
+    }
+    connection_->add(v, q);
+    return v;
+  }
+
+  bool seeds_connected() const {
+    for (std::size_t i = 1; i < seed_ids_.size(); ++i) {
+      if (!roadmap_->same_component(seed_ids_[0], seed_ids_[i])) return false;
+    }
+    return true;
+  }
+
+  // Vertex path seed 0 -> seed 1 -> ...; segment_starts_ marks where each seed's leg begins.
+  bool search_all(std::vector<VertexId>& ids) {
+    ids.assign(1, seed_ids_[0]);
+    segment_starts_.assign(1, 0);
+    for (std::size_t i = 1; i < seed_ids_.size(); ++i) {
+      if (!astar_.search(*roadmap_, ctx_.space, seed_ids_[i - 1], seed_ids_[i], leg_)) return false;
+      ids.insert(ids.end(), leg_.begin() + 1, leg_.end());
+      segment_starts_.push_back(ids.size() - 1);
+    }
+    return true;
+  }
+
+  // A* through the seeds. Lazy: checks the unchecked edges of the candidate path in order and, at
+  // the first invalid one, removes it and searches again; false when the seeds fall apart.
+  bool find_path(std::vector<State>& path) {
+    std::vector<VertexId> ids;
+    for (;;) {
+      if (!seeds_connected() || !search_all(ids)) return false;
+      bool valid = true;
+      for (std::size_t i = 1; i < ids.size() && settings_.lazy; ++i) {
+        const VertexId a = ids[i - 1], b = ids[i];
+        if (edge_checked(a, b)) continue;
+        if (local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
+          roadmap_->mark_valid(a, b);
+        } else {
+          roadmap_->remove_edge(a, b);
+          ++removed_edges_;
+          valid = false;
+          break;
+        }
+      }
+      if (valid) break;
+      if (stop_.should_stop(roadmap_->vertex_count())) return false;  // the main loop reports why
+    }
+    path.clear();
+    for (const VertexId v : ids) path.push_back(roadmap_->state(v));
+    return true;
+  }
+
+  bool edge_checked(VertexId a, VertexId b) const {
+    for (const Edge& e : roadmap_->edges(a)) {
+      if (e.to == b && e.check == EdgeCheck::kValid) return true;
+    }
+    return false;
+  }
+
+  // Shortcuts each seed-to-seed leg separately so that the path still passes through every seed.
+  void smooth(core::Rng& rng, std::vector<State>& path) {
+    core::Counters& counters = ctx_.checker.counters();
+    const core::Phase phase = counters.phase();  // kPlanning, or kTraining inside a learner
+    counters.set_phase(core::Phase::kQuery);
+    std::vector<State> out, leg;
+    for (std::size_t s = 1; s < segment_starts_.size(); ++s) {
+      leg.assign(path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s - 1]),
+                 path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s]) + 1);
+      shortcuts_ += shortcut_path(*local_planner_, rng, settings_.smooth_attempts, leg);
+      out.insert(out.end(), leg.begin() + (out.empty() ? 0 : 1), leg.end());
+    }
+    if (segment_starts_.size() < 2) out = path;  // a single seed: nothing to smooth
+    path = std::move(out);
+    counters.set_phase(phase);
+  }
+
+  const PrmSettings& settings_;
+  const PlanningContext& ctx_;
+  const core::StopCondition& stop_;
+  std::shared_ptr<Roadmap> roadmap_;
+  std::unique_ptr<Sampler> sampler_;
+  std::unique_ptr<LocalPlanner> local_planner_;
+  std::unique_ptr<ConnectionStrategy> connection_;
+  AStar astar_;
+  std::vector<Neighbor> neighbors_;
+  std::vector<VertexId> seed_ids_;
+  std::vector<VertexId> leg_;
+  std::vector<std::size_t> segment_starts_;
+  std::uint64_t failed_samples_ = 0;
+  std::uint64_t removed_edges_ = 0;
+  int shortcuts_ = 0;
+};
+
+}  // namespace
+
+void PrmSettings::validate() const {
+  if (k < 1 || k > kMaxK) {
+    throw ParameterError("prm: k must be in [1, " + std::to_string(kMaxK) + "], got " + std::to_string(k));
+  }
+  if (smooth_attempts < 0) {
+    throw ParameterError("prm: smooth_attempts must be >= 0, got " + std::to_string(smooth_attempts));
+  }
+}
+
+Prm::Prm(PrmSettings settings, PrmParts parts) : settings_(settings), parts_(std::move(parts)) {
+  settings_.validate();
+}
+
+PlanResult Prm::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
+  check_seeds(ctx);
+  return PrmRun(settings_, parts_, ctx, stop).run(rng);
+}
+
+void register_prm(PlannerRegistry& registry) {
+  const PrmSettings d;
+  PlannerInfo info{
+      "prm",
+      "probabilistic roadmap (Kavraki et al. 1996); lazy=true gives Lazy PRM (Bohlin & Kavraki 2000)",
+      {
+          {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
+          {"lazy", ParamType::kBool, d.lazy, 0, 1, {}, "check edges only when on a candidate path"},
+          {"smooth", ParamType::kBool, d.smooth, 0, 1, {}, "shortcut the solution path"},
+          {"smooth_attempts", ParamType::kInteger, d.smooth_attempts, 0, 1e6, {}, "shortcut attempts per leg"},
+          {"skip_same_component", ParamType::kBool, d.skip_same_component, 0, 1, {},
+           "do not try neighbours already in the new node's component"},
+      }};
+  registry.add(std::move(info), [](const Params& p) {
+    PrmSettings s;
+    s.k = static_cast<int>(p.integer("k"));
+    s.lazy = p.boolean("lazy");
+    s.smooth = p.boolean("smooth");
+    s.smooth_attempts = static_cast<int>(p.integer("smooth_attempts"));
+    s.skip_same_component = p.boolean("skip_same_component");
+    return std::make_unique<Prm>(s);
+  });
+}
+
+}  // namespace amp::roadmap

@@ -1,0 +1,84 @@
+#include "amp/roadmap/run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "amp/core/error.hpp"
+#include "amp/core/stop_condition.hpp"
+#include "amp/roadmap/path_smoothing.hpp"
+
+namespace amp::roadmap {
+
+double path_clearance(const core::Space& space, const world::ValidityChecker& checker, const std::vector<State>& path) {
+  if (path.empty()) return 0.0;
+  double best = checker.clearance(path.front()).distance;
+  State s;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const double d = space.distance(path[i - 1], path[i]);
+    const int segments = std::max(1, static_cast<int>(std::ceil(d / space.resolution())));
+    for (int j = 1; j <= segments; ++j) {
+      space.interpolate(path[i - 1], path[i], static_cast<double>(j) / segments, s);
+      best = std::min(best, checker.clearance(s).distance);
+    }
+  }
+  return best;
+}
+
+RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const ParamMap& params,
+                       std::uint64_t seed, double time_limit_s, std::size_t node_limit,
+                       const PlannerRegistry& registry) {
+  if (!problem.space || !problem.environment) {
+    throw Error("problem '" + problem.name + "': no space or environment");
+  }
+  // Made before anything is timed: a bad planner name or parameter throws ParameterError here.
+  std::unique_ptr<Planner> p = registry.make(planner, params);
+
+  RunOutcome out;
+  core::RunRecord& r = out.record;
+  r.planner = planner;
+  r.problem = problem.name;
+  r.seed = seed;
+
+  core::Counters counters;
+  counters.set_phase(core::Phase::kPlanning);
+  const std::unique_ptr<world::ValidityChecker> checker = problem.environment->make_checker(counters);
+  const PlanningContext ctx{*problem.space, *problem.environment, *checker, problem.seeds};
+  core::Rng rng(seed);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanResult result;
+  try {
+    const core::StopCondition stop(time_limit_s, node_limit);
+    result = p->plan(ctx, stop, rng);
+  } catch (const InvalidSeedError&) {
+    throw;
+  } catch (const ParameterError&) {
+    throw;
+  } catch (const std::exception& e) {
+    result = PlanResult{};
+    result.status = core::PlanStatus::kError;
+    r.message = e.what();
+  }
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  r.status = result.status;
+  r.take_counters(counters);
+  r.nodes = result.nodes;
+  r.edges = result.edges;
+  r.components = result.components;
+  r.extra = std::move(result.extra);
+  if (result.status == core::PlanStatus::kSolved) {
+    r.path_states = result.path.size();
+    r.path_length = path_length(*problem.space, result.path);
+    core::Counters measuring;  // clearance measured outside the run's counters
+    const auto clearance_checker = problem.environment->make_checker(measuring);
+    r.path_clearance = path_clearance(*problem.space, *clearance_checker, result.path);
+    out.path = std::move(result.path);
+  }
+  out.roadmap = std::move(result.roadmap);
+  return out;
+}
+
+}  // namespace amp::roadmap

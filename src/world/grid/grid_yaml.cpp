@@ -1,0 +1,93 @@
+#include "amp/world/grid_yaml.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/core/joint_space.hpp"
+#include "amp/world/grid_environment.hpp"
+#include "amp/world/map_server_loader.hpp"
+#include "amp/world/movingai_loader.hpp"
+
+namespace amp::world {
+
+namespace {
+
+constexpr double kDefaultResolutionFraction = 0.01;
+// Edges are checked at most half a cell apart so that no step jumps a one-cell wall.
+constexpr double kMaxStepInCells = 0.5;
+
+std::shared_ptr<const OccupancyGrid> load_map(const YamlFields& world) {
+  world.allow_only({"map", "resolution"});
+  const std::filesystem::path file = world.file_path("map");
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".yaml" || ext == ".yml") {
+    if (world.has("resolution")) world.fail("resolution", "only for MovingAI maps; map_server YAML sets its own");
+    return std::make_shared<const OccupancyGrid>(load_map_server(file));
+  }
+  if (ext == ".map") {
+    return std::make_shared<const OccupancyGrid>(load_movingai(file, world.positive("resolution", 1.0)));
+  }
+  world.fail("map", "expected a map_server .yaml or a MovingAI .map file, got '" + file.filename().string() + "'");
+}
+
+Shapes2d parse_body(const YamlFields& shapes) {
+  Shapes2d body;
+  const std::size_t n = shapes.size();
+  if (n == 0) shapes.fail("", "expected at least one shape");
+  for (std::size_t i = 0; i < n; ++i) {
+    const YamlFields shape = shapes.element(i);
+    shape.allow_only({"polygon", "circle"});
+    if (shape.has("polygon")) {
+      const YamlFields poly = shape.child("polygon");
+      std::vector<Eigen::Vector2d> pts = poly.as_points2();
+      if (pts.size() < 3) poly.fail("", "a polygon needs at least 3 vertices, got " + std::to_string(pts.size()));
+      body.polygons.push_back({std::move(pts)});
+    } else if (shape.has("circle")) {
+      const YamlFields circle = shape.child("circle");
+      circle.allow_only({"center", "radius"});
+      body.circles.push_back({circle.vec2("center"), circle.positive("radius")});
+    } else {
+      shape.fail("", "expected 'polygon' or 'circle'");
+    }
+  }
+  return body;
+}
+
+}  // namespace
+
+LoadedWorld parse_grid_world(const YamlFields& root) {
+  auto grid = load_map(root.child("world"));
+  const YamlFields robot_fields = root.child("robot");
+  robot_fields.allow_only({"type", "radius", "shapes"});
+  const std::string type = robot_fields.string("type");
+  GridRobot robot;
+  if (type == "disc") {
+    robot.kind = GridRobot::Kind::kDisc;
+    robot.radius = robot_fields.positive("radius");
+  } else if (type == "rigid2d") {
+    robot.kind = GridRobot::Kind::kRigid;
+    robot.body = parse_body(robot_fields.child("shapes"));
+  } else {
+    robot_fields.fail("type", "expected disc or rigid2d, got '" + type + "'");
+  }
+
+  const double fraction = root.positive("resolution", kDefaultResolutionFraction);
+  if (fraction > 1.0) root.fail("resolution", "expected a fraction in (0, 1], got " + std::to_string(fraction));
+  const Eigen::AlignedBox2d e = grid->extent();
+  auto env = std::make_shared<const GridEnvironment>(grid, std::move(robot));
+  std::shared_ptr<core::JointSpace> space;
+  if (env->robot().kind == GridRobot::Kind::kDisc) {
+    space = std::make_shared<core::JointSpace>(
+        core::make_rn_space({e.min().x(), e.min().y()}, {e.max().x(), e.max().y()}));
+  } else {
+    space = std::make_shared<core::JointSpace>(
+        core::make_se2_space(e.min().x(), e.min().y(), e.max().x(), e.max().y(), env->robot_radius()));
+  }
+  space->set_resolution(std::min(fraction * space->maximum_extent(), kMaxStepInCells * grid->resolution()));
+  return {std::move(space), std::move(env)};
+}
+
+}  // namespace amp::world

@@ -1,0 +1,127 @@
+#include <algorithm>
+#include <sstream>
+
+#include "amp/core/error.hpp"
+#include "amp/world/grid_yaml.hpp"
+#include "amp/world/ompl_cfg.hpp"
+#include "amp/world/planar_yaml.hpp"
+#include "amp/world/problem.hpp"
+#include "amp/world/spatial_yaml.hpp"
+#include "amp/world/yaml_fields.hpp"
+
+namespace amp::world {
+
+namespace {
+
+std::string format_state(const State& s) {
+  std::ostringstream out;
+  out << '[';
+  for (int i = 0; i < s.size(); ++i) out << (i ? ", " : "") << s[i];
+  out << ']';
+  return out.str();
+}
+
+bool is_spatial_robot(const std::string& type) { return type == "rigid3d" || type == "sphere" || type == "scara"; }
+
+State read_state(const YamlFields& f, const core::Space& space) {
+  const std::vector<double> v = f.as_numbers();
+  if (static_cast<int>(v.size()) != space.dimension()) {
+    f.fail("", "expected " + std::to_string(space.dimension()) + " coordinates for a " + std::string(space.kind()) +
+                   " state, got " + std::to_string(v.size()));
+  }
+  State s(space.dimension());
+  for (int i = 0; i < space.dimension(); ++i) s[i] = v[i];
+  if (space.kind() == "se3") {
+    const double n = s.tail<4>().norm();
+    if (n < 1e-9) f.fail("", "quaternion (qx, qy, qz, qw) has zero length");
+    s.tail<4>() /= n;  // users write rotations to a few digits; any non-zero quaternion names one
+  }
+  return s;
+}
+
+Problem load_yaml_problem(const std::filesystem::path& file) {
+  const YamlFields root(load_yaml_file(file), file, "");
+  if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
+  root.allow_only({"name", "description", "bounds", "resolution", "world", "robot", "start", "goal", "seeds",
+                   "defaults"});
+  const YamlFields world = root.child("world");
+  const std::string robot_type = root.child("robot").string("type");
+
+  LoadedWorld loaded;
+  if (world.has("map")) {
+    loaded = parse_grid_world(root);
+  } else if (is_spatial_robot(robot_type)) {
+    loaded = parse_spatial_world(root);
+  } else {
+    loaded = parse_planar_world(root);
+  }
+
+  Problem p;
+  p.name = root.string("name", file.stem().string());
+  p.file = file;
+  p.space = loaded.space;
+  p.environment = loaded.environment;
+  if (root.has("seeds")) {
+    if (root.has("start") || root.has("goal")) root.fail("seeds", "give either seeds or start/goal, not both");
+    const YamlFields seeds = root.child("seeds");
+    if (seeds.size() < 2) seeds.fail("", "at least two seed configurations are needed");
+    for (std::size_t i = 0; i < seeds.size(); ++i) p.seeds.push_back(read_state(seeds.element(i), *p.space));
+  } else {
+    p.seeds.push_back(read_state(root.child("start"), *p.space));
+    p.seeds.push_back(read_state(root.child("goal"), *p.space));
+  }
+  if (root.has("defaults")) {
+    const YamlFields d = root.child("defaults");
+    d.allow_only({"planner", "time_limit", "node_limit"});
+    p.defaults.planner = d.string("planner", p.defaults.planner);
+    p.defaults.time_limit_s = d.positive("time_limit", p.defaults.time_limit_s);
+    const long long nl = d.integer("node_limit", static_cast<long long>(p.defaults.node_limit));
+    if (nl <= 0) d.fail("node_limit", "expected a positive integer, got " + std::to_string(nl));
+    p.defaults.node_limit = static_cast<std::size_t>(nl);
+  }
+  return p;
+}
+
+std::string seed_name(const Problem& p, std::size_t i) {
+  if (p.seeds.size() == 2) return i == 0 ? "start" : "goal";
+  return "seeds[" + std::to_string(i) + "]";
+}
+
+// Every seed must lie in bounds and be free: a planner cannot fix a bad query, so say so up front.
+void validate_seeds(const Problem& p) {
+  core::Counters scratch;
+  const auto checker = p.environment->make_checker(scratch);
+  for (std::size_t i = 0; i < p.seeds.size(); ++i) {
+    const State& s = p.seeds[i];
+    if (!p.space->in_bounds(s)) {
+      throw FileError(p.file.string() + ": " + seed_name(p, i) + ": configuration " + format_state(s) +
+                      " is outside the space's bounds");
+    }
+    if (!checker->is_valid(s)) {
+      throw FileError(p.file.string() + ": " + seed_name(p, i) + ": configuration " + format_state(s) +
+                      " is in collision (or outside the workspace)");
+    }
+  }
+}
+
+}  // namespace
+
+Problem load_problem(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw FileError(file.string() + ": no such file");
+  if (!std::filesystem::is_regular_file(file, ec)) throw FileError(file.string() + ": not a regular file");
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  Problem p;
+  if (ext == ".cfg") {
+    p = load_ompl_cfg(file);
+  } else if (ext == ".yaml" || ext == ".yml") {
+    p = load_yaml_problem(file);
+  } else {
+    throw FileError(file.string() + ": unknown problem format '" + ext + "' (expected .yaml, .yml or .cfg)");
+  }
+  validate_seeds(p);
+  return p;
+}
+
+}  // namespace amp::world
