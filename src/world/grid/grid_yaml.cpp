@@ -9,6 +9,7 @@
 #include "amp/world/grid_environment.hpp"
 #include "amp/world/map_server_loader.hpp"
 #include "amp/world/movingai_loader.hpp"
+#include "amp/world/planar_yaml.hpp"
 
 namespace amp::world {
 
@@ -33,29 +34,6 @@ std::shared_ptr<const OccupancyGrid> load_map(const YamlFields& world) {
   world.fail("map", "expected a map_server .yaml or a MovingAI .map file, got '" + file.filename().string() + "'");
 }
 
-Shapes2d parse_body(const YamlFields& shapes) {
-  Shapes2d body;
-  const std::size_t n = shapes.size();
-  if (n == 0) shapes.fail("", "expected at least one shape");
-  for (std::size_t i = 0; i < n; ++i) {
-    const YamlFields shape = shapes.element(i);
-    shape.allow_only({"polygon", "circle"});
-    if (shape.has("polygon")) {
-      const YamlFields poly = shape.child("polygon");
-      std::vector<Eigen::Vector2d> pts = poly.as_points2();
-      if (pts.size() < 3) poly.fail("", "a polygon needs at least 3 vertices, got " + std::to_string(pts.size()));
-      body.polygons.push_back({std::move(pts)});
-    } else if (shape.has("circle")) {
-      const YamlFields circle = shape.child("circle");
-      circle.allow_only({"center", "radius"});
-      body.circles.push_back({circle.vec2("center"), circle.positive("radius")});
-    } else {
-      shape.fail("", "expected 'polygon' or 'circle'");
-    }
-  }
-  return body;
-}
-
 }  // namespace
 
 LoadedWorld parse_grid_world(const YamlFields& root) {
@@ -69,7 +47,7 @@ LoadedWorld parse_grid_world(const YamlFields& root) {
     robot.radius = robot_fields.positive("radius");
   } else if (type == "rigid2d") {
     robot.kind = GridRobot::Kind::kRigid;
-    robot.body = parse_body(robot_fields.child("shapes"));
+    robot.body = parse_shapes2d(robot_fields.child("shapes"));  // the planar worlds' shape items
   } else {
     robot_fields.fail("type", "expected disc or rigid2d, got '" + type + "'");
   }
