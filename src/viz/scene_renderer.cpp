@@ -89,7 +89,10 @@ std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<St
   return pts;
 }
 
-void legend(SvgCanvas& c, bool has_path, bool has_roadmap) {
+// 3-D worlds are drawn see-through so that stacked obstacles (floors, walls) read as darker.
+constexpr double kTopViewOpacity = 0.55;
+
+void legend(SvgCanvas& c, bool has_path, bool has_roadmap, double obstacle_opacity, bool has_unknown) {
   double x = 24;
   const double y = c.height_px() - kFooterPx / 2.0;
   auto item = [&](const char* color, const char* label, double opacity) {
@@ -97,7 +100,8 @@ void legend(SvgCanvas& c, bool has_path, bool has_roadmap) {
     c.text_px(x + 20, y + 3, label, 13, kText);
     x += 30 + 7.5 * std::string_view(label).size();
   };
-  item(kObstacleFill, "obstacle", 1.0);
+  item(kObstacleFill, "obstacle", obstacle_opacity);
+  if (has_unknown) item(kUnknownFill, "unknown (blocked)", 1.0);
   item(kStartColor, "start", 0.8);
   item(kGoalColor, "goal", 0.8);
   if (has_path) item(kPathColor, "path", 0.6);
@@ -115,7 +119,7 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
   const std::string title = options.title.empty() ? problem.name : options.title;
   const std::string subtitle = std::string(problem.space->kind()) +
                                (env.workspace_dimension() == 3 ? ", 3-D world seen from above" : "");
-  c.text_px(28, 19, title + "  (" + subtitle + ")", 15, kText, "start", true);
+  c.text_px(28, 19, title + " (" + subtitle + ")", 15, kText, "start", true);
 
   c.begin_group("workspace");
   c.rect(bounds, Style{"#f7f8fa", kBoundsStroke, 1.5});
@@ -132,10 +136,13 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
     c.end_group();
   }
 
-  c.begin_group("obstacles");
   const world::Outline outline = env.obstacle_outline();
+  const double obstacle_opacity = env.workspace_dimension() == 3 ? kTopViewOpacity : 1.0;
+  c.begin_group("obstacles", obstacle_opacity, outline.grid != nullptr);
   if (outline.grid != nullptr) draw_grid(c, *outline.grid);
-  draw_shapes(c, outline.shapes, Style{kObstacleFill, kObstacleFill, 0.6, env.workspace_dimension() == 3 ? 0.55 : 1.0});
+  // Members are opaque with an outline of their own colour, so the seams between adjacent
+  // triangles of a mesh disappear; the group carries the opacity.
+  draw_shapes(c, outline.shapes, Style{kObstacleFill, kObstacleFill, 0.8, 1.0});
   c.end_group();
 
   if (options.path != nullptr && !options.path->empty()) {
@@ -157,7 +164,9 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
   c.dot(env.reference_point(problem.goal()).head<2>(), 3.0, Style{"#ffffff", "#8a3d00", 1.5});
   c.end_group();
 
-  legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr);
+  const bool has_unknown = outline.grid != nullptr && outline.grid->count(world::CellState::kUnknown) > 0;
+  legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr, obstacle_opacity,
+         has_unknown);
   return c.str();
 }
 

@@ -90,7 +90,12 @@ void SvgCanvas::text_px(double x, double y, std::string_view text, int size_px, 
         << "</text>\n";
 }
 
-void SvgCanvas::begin_group(std::string_view id) { body_ << "<g id=\"" << xml_escape(id) << "\">\n"; }
+void SvgCanvas::begin_group(std::string_view id, double opacity, bool crisp) {
+  body_ << "<g id=\"" << xml_escape(id) << "\"";
+  if (opacity < 1.0) body_ << " opacity=\"" << opacity << "\"";
+  if (crisp) body_ << " shape-rendering=\"crispEdges\"";
+  body_ << ">\n";
+}
 void SvgCanvas::end_group() { body_ << "</g>\n"; }
 
 std::string SvgCanvas::str() const {

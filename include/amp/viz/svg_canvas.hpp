@@ -41,8 +41,10 @@ class SvgCanvas {
   void text_px(double x, double y, std::string_view text, int size_px, const std::string& color,
                std::string_view anchor = "start", bool bold = false);
   void rect_px(double x, double y, double w, double h, const Style& s);
-  // Opens/closes a <g> group (e.g. one per layer, with a class for readers of the SVG).
-  void begin_group(std::string_view id);
+  // Opens/closes a <g> group (one per layer). A group's opacity composites the group as one image,
+  // so overlapping members (mesh triangles, grid runs) show no seams or double darkening;
+  // `crisp` turns off anti-aliasing inside it (pixel-aligned rasters such as occupancy grids).
+  void begin_group(std::string_view id, double opacity = 1.0, bool crisp = false);
   void end_group();
 
   std::string str() const;
