@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libfcl-dev libccd-dev libassimp-dev libnanoflann-dev libcgal-dev libgmp-dev libmpfr-dev
+  libeigen3-dev libfcl-dev libccd-dev libassimp-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-math-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )

@@ -28,7 +28,7 @@ double path_clearance(const core::Space& space, const world::ValidityChecker& ch
 
 RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const ParamMap& params,
                        std::uint64_t seed, double time_limit_s, std::size_t node_limit,
-                       const PlannerRegistry& registry) {
+                       const PlannerRegistry& registry, const std::atomic<bool>* cancel) {
   if (!problem.space || !problem.environment) {
     throw Error("problem '" + problem.name + "': no space or environment");
   }
@@ -50,7 +50,7 @@ RunOutcome execute_run(const world::Problem& problem, const std::string& planner
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult result;
   try {
-    const core::StopCondition stop(time_limit_s, node_limit);
+    const core::StopCondition stop(time_limit_s, node_limit, cancel);
     result = p->plan(ctx, stop, rng);
   } catch (const InvalidSeedError&) {
     throw;

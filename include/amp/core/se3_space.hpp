@@ -28,6 +28,8 @@ class Se3Space final : public Space {
   void embed_variant(const State& s, int variant, double* out) const override;
 
   const Eigen::Vector3d& lo() const { return lo_; }
+  double translation_weight() const { return translation_weight_; }
+  double rotation_weight() const { return rotation_weight_; }
   const Eigen::Vector3d& hi() const { return hi_; }
   static Eigen::Quaterniond rotation(const State& s) { return Eigen::Quaterniond(s[6], s[3], s[4], s[5]); }
   static State make_state(const Eigen::Vector3d& p, const Eigen::Quaterniond& q);

@@ -8,15 +8,15 @@
 
 namespace amp::roadmap {
 
-// Exact k nearest neighbours with a nanoflann dynamic KD-tree (a logarithmic family of static trees,
-// so insertion is amortised polylogarithmic) over core::Space::embed().
+// Exact k nearest neighbours with one dynamic KD-tree (dynamic_kd_tree.hpp: bucket insertion,
+// scapegoat rebalancing, full rebuild when the size doubles, so insertion is amortised O(log n) on
+// random orders), searched by branch and bound with a lower bound of space.distance() over each
+// node's box (kd_bounds.hpp): per block for SE3 (translation + rotation angle, q and -q), through
+// the space's Euclidean embedding otherwise.
 //
-// The embedding's Euclidean distance is only a lower bound of space.distance() (angles embed as
-// chords, SE3 orientations as q and -q). Rather than retrieving K' embedded candidates and growing
-// K' until the bound certifies them, the search ranks every state it reaches by its TRUE distance and
-// prunes the tree at the current k-th true distance (branch and bound): a state never reached has
-// embedded, hence true, distance beyond that bound. One pass per embedding variant, sharing the
-// bound, gives exactly the brute-force answer (ties by index included).
+// Every state reached is ranked by its TRUE distance and the tree is pruned at the current k-th
+// true distance: a state never reached has a lower bound, hence a true distance, beyond it. One
+// pass gives exactly the brute-force answer (ties by index included).
 class KdTreeNeighbors final : public NearestNeighbors {
  public:
   // `counters` may be null; space and counters must outlive this object.
@@ -33,8 +33,10 @@ class KdTreeNeighbors final : public NearestNeighbors {
   // True distances the last query computed (how hard the embedding made it; n for brute force).
   std::size_t last_distance_evaluations() const;
 
+  struct Impl;  // the tree, per bound policy (defined in the .cpp)
+
  private:
-  struct Impl;
+  core::Counters* counters_;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -18,7 +18,7 @@ struct Neighbor {
 };
 
 // Exact k-nearest-neighbour search under a space's metric. Implementations: LinearNeighbors (brute
-// force, the reference) and KdTreeNeighbors (nanoflann). Each query counts one
+// force, the reference) and KdTreeNeighbors (dynamic KD-tree, exact by lower bounds). Each query counts one
 // Counters::add_nn_query when the implementation was given counters.
 class NearestNeighbors {
  public:

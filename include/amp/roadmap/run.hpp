@@ -1,4 +1,5 @@
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -22,11 +23,13 @@ struct RunOutcome {
 // Rng(seed), a StopCondition(time_limit_s, node_limit), the plan timed, the record filled (path
 // length, and path clearance = the smallest clearance over the path's states sampled at the space's
 // resolution, measured with a separate checker so that it costs the run nothing).
+// `cancel`, when set, stops the planner as a time limit would (Ctrl-C in `amp bench`).
 // A planner that throws gives status kError with its message; an unknown planner, a bad parameter
 // (ParameterError) or a bad seed (InvalidSeedError) is the user's error and is rethrown.
 RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const ParamMap& params,
                        std::uint64_t seed, double time_limit_s, std::size_t node_limit,
-                       const PlannerRegistry& registry = builtin_planners());
+                       const PlannerRegistry& registry = builtin_planners(),
+                       const std::atomic<bool>* cancel = nullptr);
 
 // Smallest clearance along `path`, sampling each segment at the space's resolution; 0 for an empty path.
 double path_clearance(const core::Space& space, const world::ValidityChecker& checker, const std::vector<State>& path);
