@@ -1,8 +1,13 @@
 #include "cli_util.hpp"
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 
 #include "amp/core/error.hpp"
+#include "amp/roadmap/planner_registry.hpp"
+#include "amp/world/problem.hpp"
 
 namespace amp::cli {
 
@@ -18,6 +23,53 @@ void check_writable(const std::filesystem::path& file, bool force, const std::st
   if (!std::filesystem::is_directory(parent, ec)) {
     throw Error(option + ": directory '" + parent.string() + "' does not exist");
   }
+}
+
+namespace {
+
+CLI::Validator positive(bool integer) {
+  return CLI::Validator(
+      [integer](std::string& text) -> std::string {
+        const char* begin = text.c_str();
+        char* end = nullptr;
+        const double v = std::strtod(begin, &end);
+        const bool number = end != begin && *end == '\0' && std::isfinite(v);
+        if (!number || !(v > 0.0) || (integer && v != std::floor(v))) {
+          return std::string("expected a positive ") + (integer ? "integer" : "number") + ", got '" + text + "'";
+        }
+        return {};
+      },
+      integer ? "POSITIVE INTEGER" : "POSITIVE");
+}
+
+}  // namespace
+
+CLI::Validator positive_number() { return positive(false); }
+CLI::Validator positive_integer() { return positive(true); }
+
+CLI::Validator unsigned_integer() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+        if (text.empty() || ec != std::errc() || ptr != end) {
+          return "expected a whole number in 0..18446744073709551615, got '" + text + "'";
+        }
+        return {};
+      },
+      "UINT64");
+}
+
+std::string resolve_planner(const std::string& option, const world::Problem& problem) {
+  if (!option.empty()) return option;
+  try {
+    roadmap::builtin_planners().info(problem.defaults.planner);
+  } catch (const ParameterError& e) {
+    const char* field = problem.file.extension() == ".cfg" ? "[solver] planner" : "defaults.planner";
+    throw FileError(problem.file.string() + ": " + field + ": " + e.what());
+  }
+  return problem.defaults.planner;
 }
 
 roadmap::ParamMap parse_params(const std::vector<std::string>& items) {

@@ -3,7 +3,13 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "amp/roadmap/parameters.hpp"
+
+namespace amp::world {
+struct Problem;
+}
 
 namespace amp::cli {
 
@@ -15,6 +21,17 @@ inline constexpr int kExitNotSolved = 2;
 // Refuses to overwrite an existing file unless `force` (nothing the user wrote is lost unasked);
 // also refuses a directory or a path whose parent directory does not exist.
 void check_writable(const std::filesystem::path& file, bool force, const std::string& option);
+
+// Option checks with one-line messages ("--time-limit: expected a positive number, got '0'");
+// CLI11's PositiveNumber prints its range, up to a 300-digit DBL_MAX.
+CLI::Validator positive_number();
+CLI::Validator positive_integer();
+// A whole number in 0..2^64-1 (seeds); CLI11 would wrap "-1" to 2^64-1 without a word.
+CLI::Validator unsigned_integer();
+
+// The planner to run: `option` (--planner) if given, else the problem's default, checked here so
+// that a bad name in the problem file is reported at its field ("defaults.planner").
+std::string resolve_planner(const std::string& option, const world::Problem& problem);
 
 // Parses `--param name=value` items; values stay strings, the planner's specs type them.
 roadmap::ParamMap parse_params(const std::vector<std::string>& items);

@@ -8,5 +8,6 @@ namespace amp::cli {
 void add_plan_command(CLI::App& app, int& exit_code);
 void add_render_command(CLI::App& app, int& exit_code);
 void add_demo_command(CLI::App& app, int& exit_code);
+void add_bench_command(CLI::App& app, int& exit_code);  // also `amp merge`
 
 }  // namespace amp::cli

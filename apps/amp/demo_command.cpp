@@ -81,8 +81,8 @@ void add_demo_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<DemoOptions>();
   CLI::App* cmd = app.add_subcommand("demo", "Run the demonstration: plan every bundled problem, draw the results");
   cmd->add_option("--out", o->out, "Output directory [out/demo]");
-  cmd->add_option("--seed", o->seed, "Random seed [1]");
-  cmd->add_option("--time-limit", o->time_limit, "Time limit per problem in seconds [60]")->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());
+  cmd->add_option("--time-limit", o->time_limit, "Time limit per problem in seconds [60]")->check(positive_number());
   cmd->callback([o, &exit_code] { exit_code = run_demo(*o); });
 }
 

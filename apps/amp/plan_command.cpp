@@ -35,8 +35,14 @@ int run_plan(const PlanOptions& o) {
   const core::PathFormat format = core::path_format_from_string(o.format);
   if (!o.out.empty()) check_writable(o.out, o.force, "--out");
   if (!o.svg.empty()) check_writable(o.svg, o.force, "--svg");
+  const auto resolved = [](const std::string& f) {
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(f));
+  };
+  if (!o.out.empty() && !o.svg.empty() && resolved(o.out) == resolved(o.svg)) {
+    throw Error("--svg: '" + o.svg + "' is the --out file too; the picture would replace the path");
+  }
   const world::Problem problem = world::load_problem(o.problem);
-  const std::string planner = o.planner.empty() ? problem.defaults.planner : o.planner;
+  const std::string planner = resolve_planner(o.planner, problem);
   const double time_limit = o.time_limit > 0.0 ? o.time_limit : problem.defaults.time_limit_s;
   const std::size_t node_limit = o.node_limit > 0 ? static_cast<std::size_t>(o.node_limit) : problem.defaults.node_limit;
 
@@ -82,11 +88,11 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("problem", o->problem, "Problem file (.yaml or OMPL.app .cfg)")->required();
   cmd->add_option("--planner", o->planner, "Planner name (default: the problem's, else prm)");
   cmd->add_option("--param", o->params, "Planner parameter name=value (repeatable), e.g. --param k=15");
-  cmd->add_option("--seed", o->seed, "Random seed [1]");
+  cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());
   cmd->add_option("--time-limit", o->time_limit, "Time limit in seconds (default: the problem's)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--node-limit", o->node_limit, "Roadmap node limit (default: the problem's)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_integer());
   cmd->add_option("--out", o->out, "Write the path to this file");
   cmd->add_option("--format", o->format, "Path format: path (OMPL.app .path) or yaml [path]")
       ->check(CLI::IsMember({"path", "yaml"}));

@@ -35,7 +35,7 @@ int run_render(const RenderOptions& o) {
   scene.width_px = o.width;
   if (o.roadmap) {
     // A roadmap is drawn from a fresh run of the planner with the given seed.
-    const std::string planner = o.planner.empty() ? problem.defaults.planner : o.planner;
+    const std::string planner = resolve_planner(o.planner, problem);
     const roadmap::RunOutcome run =
         roadmap::execute_run(problem, planner, {}, o.seed, problem.defaults.time_limit_s, problem.defaults.node_limit);
     if (run.roadmap) {
@@ -60,7 +60,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--path", o->path, "Path file to draw (as written by amp plan --out)");
   cmd->add_flag("--roadmap", o->roadmap, "Plan with --planner/--seed and draw the roadmap");
   cmd->add_option("--planner", o->planner, "Planner for --roadmap (default: the problem's)");
-  cmd->add_option("--seed", o->seed, "Seed for --roadmap [1]");
+  cmd->add_option("--seed", o->seed, "Seed for --roadmap [1]")->check(unsigned_integer());
   cmd->add_option("--width", o->width, "Image width in pixels [900]")->check(CLI::Range(200, 8000));
   cmd->add_option("-o,--output", o->output, "SVG file to write")->required();
   cmd->add_flag("--force", o->force, "Overwrite an existing output file");

@@ -44,11 +44,11 @@ Problem load_yaml_problem(const std::filesystem::path& file) {
   if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
   root.allow_only({"name", "description", "bounds", "resolution", "world", "robot", "start", "goal", "seeds",
                    "defaults"});
-  const YamlFields world = root.child("world");
   const std::string robot_type = root.child("robot").string("type");
 
   LoadedWorld loaded;
-  if (world.has("map")) {
+  // `world:` is optional (no world is an empty one), so only look inside it when it is there.
+  if (root.has("world") && root.child("world").has("map")) {
     loaded = parse_grid_world(root);
   } else if (is_spatial_robot(robot_type)) {
     loaded = parse_spatial_world(root);

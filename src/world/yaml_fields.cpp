@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "amp/core/error.hpp"
@@ -173,8 +174,13 @@ std::filesystem::path YamlFields::file_path(std::string_view key) const {
 
 void YamlFields::allow_only(std::initializer_list<std::string_view> allowed) const {
   if (!node_.IsMap()) fail("", "expected a mapping, got " + scalar_text(node_));
+  std::set<std::string> seen;
   for (const auto& kv : node_) {
     const std::string key = kv.first.Scalar();
+    // yaml-cpp keeps both copies of a repeated key and lookups see only the first: say so instead.
+    if (!seen.insert(key).second) {
+      fail(key, "duplicate field (again at line " + std::to_string(kv.first.Mark().line + 1) + ")");
+    }
     bool ok = false;
     for (std::string_view a : allowed) ok = ok || a == key;
     if (!ok) {

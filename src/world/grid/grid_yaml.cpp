@@ -48,6 +48,7 @@ LoadedWorld parse_grid_world(const YamlFields& root) {
   } else if (type == "rigid2d") {
     robot.kind = GridRobot::Kind::kRigid;
     robot.body = parse_shapes2d(robot_fields.child("shapes"));  // the planar worlds' shape items
+    if (robot.body.empty()) robot_fields.fail("shapes", "expected at least one shape");
   } else {
     robot_fields.fail("type", "expected disc or rigid2d, got '" + type + "'");
   }

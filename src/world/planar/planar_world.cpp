@@ -16,6 +16,23 @@ constexpr double kMinRelativeArea = 1e-12;
 
 std::string fmt(double v) { return std::to_string(v); }
 
+// All vertices on one line (up to rounding). Tested before simplicity: the edges of such a polygon
+// fold back onto each other, and "zero area" says what is wrong better than "self-intersecting".
+bool all_collinear(const std::vector<Eigen::Vector2d>& v, double diag_sq) {
+  std::size_t far = 0;
+  for (std::size_t k = 1; k < v.size(); ++k) {
+    if ((v[k] - v[0]).squaredNorm() > (v[far] - v[0]).squaredNorm()) far = k;
+  }
+  const Eigen::Vector2d d = v[far] - v[0];
+  const double d_sq = d.squaredNorm();
+  if (d_sq == 0.0) return true;
+  for (const Eigen::Vector2d& p : v) {
+    const double cross = d.x() * (p - v[0]).y() - d.y() * (p - v[0]).x();  // |d| * distance of p to the line
+    if (cross * cross > kMinRelativeArea * kMinRelativeArea * diag_sq * d_sq) return false;
+  }
+  return true;
+}
+
 // "obstacle polygon 3: " or, for an anonymous single shape, "".
 std::string label(const std::string& what, const char* kind, std::size_t i) {
   return what.empty() ? std::string() : what + " " + kind + " " + std::to_string(i) + ": ";
@@ -31,11 +48,12 @@ void validate_shapes(const Shapes2d& shapes, std::string_view what, double min_r
     for (const auto& p : v) {
       if (!p.allFinite()) throw ParameterError(name + "vertex coordinates must be finite");
     }
+    const double diag_sq = bounding_box(v).sizes().squaredNorm();
+    if (all_collinear(v, diag_sq)) throw ParameterError(name + "zero area (all vertices on one line)");
     int bad_i = 0, bad_j = 0;
     if (!is_simple(v, &bad_i, &bad_j)) {
       throw ParameterError(name + "self-intersecting edges " + std::to_string(bad_i) + " and " + std::to_string(bad_j));
     }
-    const double diag_sq = bounding_box(v).sizes().squaredNorm();
     const double area = signed_area(v);
     if (!(std::abs(area) > kMinRelativeArea * diag_sq)) {
       throw ParameterError(name + "zero area (area " + fmt(area) + ")");

@@ -22,7 +22,11 @@ auto at(const YamlFields& fields, std::string_view key, F f) {
   try {
     return f();
   } catch (const ParameterError& e) {
-    fields.fail(key, e.what());
+    const std::string field = fields.path().empty() ? std::string(key) : fields.path() + "." + std::string(key);
+    const std::string what = e.what();
+    // Messages that already start with the field ("robot.links[1]: ...") are not prefixed twice.
+    if (what.rfind(field, 0) == 0) throw FileError(fields.file().string() + ": " + what);
+    fields.fail(key, what);
   }
 }
 

@@ -66,7 +66,14 @@ Solid parse_solid(const YamlFields& item) {
         }
         if (!(scale.minCoeff() > 0.0)) f.fail("scale", "must be positive");
       }
-      return Solid::mesh_of(load_mesh(f.file_path("file"), up), pose_of(f, "position"), scale);
+      const std::filesystem::path file = f.file_path("file");
+      TriangleMesh mesh;
+      try {
+        mesh = load_mesh(file, up);
+      } catch (const FileError& e) {
+        f.fail("file", e.what());  // the mesh file's own error, placed at the field naming it
+      }
+      return Solid::mesh_of(mesh, pose_of(f, "position"), scale);
     }
   } catch (const FileError&) {
     throw;
@@ -157,7 +164,9 @@ LoadedWorld parse_spatial_world(const YamlFields& root) {
   LoadedWorld out;
   if (type == "rigid3d") {
     r.allow_only({"type", "shapes"});
-    SpatialRobot robot = SpatialRobot::rigid(parse_solids(r.child("shapes")));
+    std::vector<Solid> body = parse_solids(r.child("shapes"));
+    if (body.empty()) r.fail("shapes", "expected at least one shape");
+    SpatialRobot robot = SpatialRobot::rigid(std::move(body));
     out.space = std::make_shared<core::Se3Space>(bounds.min(), bounds.max(), std::max(robot.radius(), 1e-9), 1.0,
                                                  resolution);
     out.environment = std::make_shared<SpatialEnvironment>(world, std::move(robot));
