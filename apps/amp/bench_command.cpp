@@ -13,6 +13,7 @@
 #include "amp/roadmap/planner_registry.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "mpi_session.hpp"
 
 namespace amp::cli {
 
@@ -108,23 +109,55 @@ int run_bench(const BenchOptions& o) {
   b.force = o.force;
   b.ompl_log = o.ompl_log;
   b.cancel = &g_interrupted;
-  b.on_progress = progress_printer();
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
 
-  std::cout << "amp bench: " << e.name << ": " << e.problems.size() << " problems x " << e.planners.size()
-            << " planners x " << e.runs << " runs (shard " << b.shard.to_string() << ") -> " << b.out_dir.string()
-            << '\n';
+  const MpiSession mpi;
+  const std::filesystem::path out = b.out_dir;
+  if (mpi.active()) {
+    // Rank r runs shard r/P into out/shards/r; rank 0 merges them into out once all have finished.
+    if (b.shard.count != 1) throw Error("--shard: not with mpirun, which shards by rank");
+    std::error_code ec;
+    const bool non_empty = std::filesystem::is_directory(out, ec) && !std::filesystem::is_empty(out, ec);
+    const bool refuse = (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec)) ||
+                        (non_empty && !o.force && !o.resume);
+    if (mpi.any(refuse)) {
+      throw Error("--out: '" + out.string() + "' is a file or not empty (use --resume or --force)");
+    }
+    mpi.barrier();  // every rank has looked before any rank writes
+    b.shard = bench::Shard{mpi.rank(), mpi.size()};
+    b.out_dir = out / "shards" / std::to_string(mpi.rank());
+    b.resume = o.resume && std::filesystem::is_directory(b.out_dir, ec);
+  }
+  if (mpi.rank() == 0) b.on_progress = progress_printer();
+
+  if (mpi.rank() == 0) {
+    std::cout << "amp bench: " << e.name << ": " << e.problems.size() << " problems x " << e.planners.size()
+              << " planners x " << e.runs << " runs (" << (mpi.active() ? std::to_string(mpi.size()) + " MPI ranks"
+                                                                           : "shard " + b.shard.to_string())
+              << ") -> " << out.string() << '\n';
+  }
   const bench::BenchResult r = bench::run_experiment(e, b);
-  if (r.interrupted) {
+  if (mpi.any(r.interrupted)) {
     std::cerr << "\namp bench: interrupted: " << r.written << " of " << r.total << " runs written to "
               << (b.out_dir / "runs.csv").string() << "; finish with: amp bench " << o.experiment << " --out "
-              << b.out_dir.string() << " --resume\n";
+              << out.string() << " --resume\n";
     return 130;
   }
-  std::cout << "wrote " << r.written << " runs in " << format_duration(r.wall_time_s) << ": "
-            << (b.out_dir / "runs.csv").string() << ", summary.json, results.db, report.html"
-            << (o.ompl_log ? ", ompl-logs/" : "") << '\n';
+  if (mpi.active()) {
+    mpi.barrier();
+    if (mpi.rank() == 0) {
+      std::vector<std::filesystem::path> shards;
+      for (std::size_t i = 0; i < mpi.size(); ++i) shards.push_back(out / "shards" / std::to_string(i));
+      bench::merge_results(shards, out, /*force=*/true, o.ompl_log);  // out holds the shards themselves
+    }
+    mpi.barrier();
+  }
+  if (mpi.rank() == 0) {
+    std::cout << "wrote " << (mpi.active() ? e.trial_count() : r.written) << " runs in "
+              << format_duration(r.wall_time_s) << ": " << (out / "runs.csv").string()
+              << ", summary.json, results.db, report.html" << (o.ompl_log ? ", ompl-logs/" : "") << '\n';
+  }
   return kExitOk;
 }
 

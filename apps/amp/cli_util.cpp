@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 
 #include "amp/core/error.hpp"
@@ -63,11 +64,19 @@ CLI::Validator unsigned_integer() {
 
 std::string resolve_planner(const std::string& option, const world::Problem& problem) {
   if (!option.empty()) return option;
+  const auto& registry = roadmap::builtin_planners();
+  if (registry.contains(problem.defaults.planner)) return problem.defaults.planner;
+  if (problem.file.extension() == ".cfg") {
+    // OMPL.app files name OMPL's planners (rrtconnect, kpiece...): they must run unchanged, so
+    // their planner falls back to ours, with a note.
+    std::fprintf(stderr, "amp: note: %s: [solver] planner '%s' is not an AMP planner; using prm\n",
+                 problem.file.string().c_str(), problem.defaults.planner.c_str());
+    return "prm";
+  }
   try {
-    roadmap::builtin_planners().info(problem.defaults.planner);
+    registry.info(problem.defaults.planner);
   } catch (const ParameterError& e) {
-    const char* field = problem.file.extension() == ".cfg" ? "[solver] planner" : "defaults.planner";
-    throw FileError(problem.file.string() + ": " + field + ": " + e.what());
+    throw FileError(problem.file.string() + ": defaults.planner: " + e.what());
   }
   return problem.defaults.planner;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "amp/core/error.hpp"
 #include "amp/viz/svg_canvas.hpp"
@@ -41,7 +42,7 @@ std::string fit_label(const std::string& s, double width_px) {
 // The value range of all series (positive values only on a log axis), widened to nice ticks unless
 // the options fix it.
 std::pair<double, double> data_range(const std::vector<Series>& series, const ChartOptions& o) {
-  double lo = INFINITY, hi = -INFINITY;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& s : series) {
     for (double v : s.values) {
       if (o.scale == AxisScale::kLog && v <= 0) continue;
@@ -55,7 +56,7 @@ std::pair<double, double> data_range(const std::vector<Series>& series, const Ch
 }
 
 void draw_title(SvgCanvas& c, const ChartOptions& o, double left) {
-  if (!o.title.empty()) c.text_px(left, 17, o.title, 13, kTextColor, "start", true);
+  if (!o.title.empty()) c.text_px(left, 15, o.title, 13, kTextColor, "start", true);
 }
 
 }  // namespace
@@ -136,7 +137,7 @@ std::string compact_number(double v) {
     }
   }
   if (a == 0) return "0";
-  std::snprintf(buf, sizeof buf, a < 1e-3 ? "%.2g" : "%.3g", v);
+  std::snprintf(buf, sizeof buf, a < 1e-3 ? "%.2g" : "%.4g", v);  // 4 digits: ticks 99.8, 100.2 stay apart
   return buf;
 }
 
@@ -206,8 +207,8 @@ std::string box_plot_svg(const std::vector<Series>& series, const ChartOptions& 
   SvgCanvas c = pixel_canvas(o.width_px, o.height_px);
   draw_title(c, o, 8);
   if (!o.value_label.empty()) {
-    c.text_px(l.plot_left - 8, l.plot_top - 8, o.value_label + (o.scale == AxisScale::kLog ? " (log scale)" : ""),
-              11, kMutedText, "start");
+    c.text_px(l.plot_right, 15, o.value_label + (o.scale == AxisScale::kLog ? ", log scale" : ""), 11, kMutedText,
+              "end");
   }
   c.begin_group("grid");
   for (double t : l.axis.ticks()) {

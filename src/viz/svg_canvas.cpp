@@ -91,7 +91,7 @@ void SvgCanvas::text_px(double x, double y, std::string_view text, int size_px, 
 }
 
 void SvgCanvas::begin_group(std::string_view id, double opacity, bool crisp) {
-  body_ << "<g id=\"" << xml_escape(id) << "\"";
+  body_ << "<g class=\"" << xml_escape(id) << "\"";  // a class: several drawings may share one HTML page
   if (opacity < 1.0) body_ << " opacity=\"" << opacity << "\"";
   if (crisp) body_ << " shape-rendering=\"crispEdges\"";
   body_ << ">\n";

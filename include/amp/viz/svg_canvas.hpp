@@ -44,7 +44,7 @@ class SvgCanvas {
   // Opens/closes a <g> group (one per layer). A group's opacity composites the group as one image,
   // so overlapping members (mesh triangles, grid runs) show no seams or double darkening;
   // `crisp` turns off anti-aliasing inside it (pixel-aligned rasters such as occupancy grids).
-  void begin_group(std::string_view id, double opacity = 1.0, bool crisp = false);
+  void begin_group(std::string_view name, double opacity = 1.0, bool crisp = false);
   void end_group();
 
   std::string str() const;

@@ -1,0 +1,38 @@
+#pragma once
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "amp/bench/experiment.hpp"
+
+namespace amp::bench {
+
+// The numbers of one problem x planner configuration that the summary needs: a few doubles per run,
+// never the runs themselves.
+struct GroupMetrics {
+  std::vector<double> cd_calls;
+  std::vector<double> time_s;
+  std::vector<double> nodes;
+  std::vector<double> path_length;  // solved runs only
+  std::map<std::string, std::size_t> statuses;
+
+  std::size_t runs() const { return cd_calls.size(); }
+  void add(const Trial& t);
+};
+
+// metrics[problem][planner] as the experiment orders them.
+using ExperimentMetrics = std::vector<std::vector<GroupMetrics>>;
+
+ExperimentMetrics empty_metrics(const Experiment& e);
+
+// summary.json: per problem x planner, n, solved %, statuses, and for CD calls, time, nodes and path
+// length: mean, std, CV, median, quartiles, min, max and a histogram; per problem, the tests between
+// its planners on run cost (CD calls): Brown-Forsythe, one-way ANOVA, Welch, Kruskal-Wallis, REGWQ.
+// Runs that end at a limit enter the cost statistics with the cost they had spent (censored at the
+// limit, as the run-cost paper treats them); path length uses solved runs only.
+nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, double alpha = 0.01);
+
+}  // namespace amp::bench

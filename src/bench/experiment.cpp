@@ -1,0 +1,193 @@
+#include "amp/bench/experiment.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "amp/core/error.hpp"
+#include "amp/core/rng.hpp"
+#include "amp/roadmap/planner_registry.hpp"
+#include "amp/world/problem.hpp"
+#include "amp/world/yaml_fields.hpp"
+
+namespace amp::bench {
+
+namespace {
+
+// FNV-1a, 64 bit: a stated, portable string hash for seeds and fingerprints.
+std::uint64_t fnv1a(std::string_view s, std::uint64_t h = 0xcbf29ce484222325ULL) {
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+roadmap::ParamValue param_value(const YAML::Node& n) { return roadmap::ParamValue(n.Scalar()); }
+
+PlannerConfig parse_planner(const world::YamlFields& f) {
+  PlannerConfig c;
+  if (f.node().IsScalar()) {
+    c.planner = f.node().Scalar();
+    c.label = c.planner;
+    return c;
+  }
+  f.allow_only({"name", "planner", "params", "draw"});
+  c.planner = f.string("planner");
+  c.label = f.string("name", c.planner);
+  if (f.has("params")) {
+    const world::YamlFields p = f.child("params");
+    if (!p.is_map()) p.fail("", "expected a mapping of parameter: value");
+    for (const auto& kv : p.node()) {
+      if (!kv.second.IsScalar()) p.fail(kv.first.Scalar(), "expected a single value");
+      c.params.insert_or_assign(kv.first.Scalar(), param_value(kv.second));
+    }
+  }
+  if (f.has("draw")) {
+    const world::YamlFields d = f.child("draw");
+    if (!d.is_map()) d.fail("", "expected a mapping of parameter: [values]");
+    for (const auto& kv : d.node()) {
+      const world::YamlFields values = d.child(kv.first.Scalar());
+      if (values.size() == 0) values.fail("", "expected at least one value to draw from");
+      std::vector<roadmap::ParamValue> list;
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!values.node()[i].IsScalar()) values.fail("", "expected a list of values");
+        list.push_back(param_value(values.node()[i]));
+      }
+      if (c.params.count(kv.first.Scalar()) != 0) d.fail(kv.first.Scalar(), "is both fixed (params) and drawn");
+      c.draws.emplace(kv.first.Scalar(), std::move(list));
+    }
+  }
+  return c;
+}
+
+// Builds the planner once per drawn value so a bad name, type or range fails before any run.
+void check_planner(const PlannerConfig& c, const world::YamlFields& where) {
+  const auto& registry = roadmap::builtin_planners();
+  try {
+    registry.make(c.planner, c.params);
+    for (const auto& [name, values] : c.draws) {
+      for (const auto& v : values) {
+        roadmap::ParamMap p = c.params;
+        p.insert_or_assign(name, v);
+        registry.make(c.planner, p);
+      }
+    }
+  } catch (const Error& e) {
+    where.fail("", e.what());
+  }
+}
+
+}  // namespace
+
+std::string experiment_fingerprint(const Experiment& e) {
+  std::ostringstream canon;
+  canon << "seed=" << e.seed << ";runs=" << e.runs << ";time=" << e.time_limit_s << ";nodes=" << e.node_limit << ';';
+  for (const auto& p : e.problems) canon << "problem=" << p.label << ':' << fnv1a(read_file(p.file)) << ';';
+  for (const auto& c : e.planners) {
+    canon << "planner=" << c.label << ':' << c.planner;
+    for (const auto& [k, v] : c.params) canon << ',' << k << '=' << v.to_string();
+    for (const auto& [k, vs] : c.draws) {
+      canon << ',' << k << "~";
+      for (const auto& v : vs) canon << v.to_string() << '|';
+    }
+    canon << ';';
+  }
+  std::ostringstream hex;
+  hex << std::hex << fnv1a(canon.str());
+  return hex.str();
+}
+
+TrialId trial_id(const Experiment& e, std::size_t index) {
+  TrialId id;
+  id.index = index;
+  const std::size_t per_problem = e.planners.size() * static_cast<std::size_t>(e.runs);
+  id.problem = index / per_problem;
+  id.planner = (index % per_problem) / static_cast<std::size_t>(e.runs);
+  id.run = static_cast<int>(index % static_cast<std::size_t>(e.runs));
+  return id;
+}
+
+std::uint64_t trial_seed(const Experiment& e, const TrialId& id) {
+  const std::uint64_t who = fnv1a(e.planners[id.planner].label, fnv1a(e.problems[id.problem].label + '\x1f'));
+  return core::derive_seed(core::derive_seed(e.seed, who), static_cast<std::uint64_t>(id.run));
+}
+
+roadmap::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std::string, std::string>* drawn) {
+  const PlannerConfig& c = e.planners[id.planner];
+  roadmap::ParamMap params = c.params;
+  if (c.draws.empty()) return params;
+  // A stream of its own (not the planner's), so drawing does not shift the planner's random numbers.
+  core::Rng rng(core::derive_seed(trial_seed(e, id), 0x6d657461ULL));
+  for (const auto& [name, values] : c.draws) {  // std::map: name order
+    const roadmap::ParamValue& v = values[rng.uniform_index(values.size())];
+    params.insert_or_assign(name, v);
+    if (drawn != nullptr) (*drawn)[name] = v.to_string();
+  }
+  return params;
+}
+
+Experiment load_experiment(const std::filesystem::path& file) {
+  const world::YamlFields root(world::load_yaml_file(file), file, "");
+  if (!root.is_map()) root.fail("", "an experiment file must be a YAML mapping");
+  root.allow_only({"name", "description", "seed", "runs", "time_limit", "node_limit", "problems", "planners"});
+  Experiment e;
+  e.file = file;
+  e.name = root.string("name", file.stem().string());
+  const long long seed = root.integer("seed", 1);
+  if (seed < 0) root.fail("seed", "expected a non-negative integer");
+  e.seed = static_cast<std::uint64_t>(seed);
+  const long long runs = root.integer("runs", 50);
+  if (runs < 1 || runs > 10'000'000) root.fail("runs", "expected an integer in [1, 10000000], got " + std::to_string(runs));
+  e.runs = static_cast<int>(runs);
+  e.time_limit_s = root.positive("time_limit", e.time_limit_s);
+  const long long nodes = root.integer("node_limit", static_cast<long long>(e.node_limit));
+  if (nodes < 1) root.fail("node_limit", "expected a positive integer, got " + std::to_string(nodes));
+  e.node_limit = static_cast<std::size_t>(nodes);
+
+  const world::YamlFields problems = root.child("problems");
+  if (problems.size() == 0) problems.fail("", "expected at least one problem");
+  std::set<std::string> labels;
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    const world::YamlFields p = problems.element(i);
+    ExperimentProblem ep;
+    if (p.node().IsScalar()) {
+      const std::filesystem::path rel = p.node().Scalar();
+      ep.file = rel.is_absolute() ? rel : file.parent_path() / rel;
+      if (!std::filesystem::is_regular_file(ep.file)) p.fail("", "no such problem file '" + ep.file.string() + "'");
+    } else {
+      p.allow_only({"file", "name"});
+      ep.file = p.file_path("file");
+    }
+    try {
+      ep.problem = std::make_shared<const world::Problem>(world::load_problem(ep.file));
+      ep.label = p.node().IsScalar() ? ep.problem->name : p.string("name", ep.problem->name);
+    } catch (const Error& err) {
+      p.fail("", err.what());
+    }
+    if (!labels.insert(ep.label).second) p.fail("", "problem name '" + ep.label + "' appears twice");
+    e.problems.push_back(std::move(ep));
+  }
+
+  const world::YamlFields planners = root.child("planners");
+  if (planners.size() == 0) planners.fail("", "expected at least one planner");
+  labels.clear();
+  for (std::size_t i = 0; i < planners.size(); ++i) {
+    const world::YamlFields f = planners.element(i);
+    PlannerConfig c = parse_planner(f);
+    check_planner(c, f);
+    if (!labels.insert(c.label).second) f.fail("", "planner name '" + c.label + "' appears twice; give each a name");
+    e.planners.push_back(std::move(c));
+  }
+  e.fingerprint = experiment_fingerprint(e);
+  return e;
+}
+
+}  // namespace amp::bench

@@ -1,0 +1,38 @@
+#pragma once
+// Private to the report (src/bench/report*.cpp): the parts of report.html other than the header
+// and the problem drawing.
+#include <cstddef>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "amp/bench/experiment.hpp"
+
+namespace amp::bench::report_page {
+
+// From runs.csv: cost[problem][planner] = each run's CD calls; the first solved trial per problem.
+struct RunData {
+  std::vector<std::vector<std::vector<double>>> cost;
+  std::vector<std::optional<std::size_t>> first_solved;
+  bool found = false;  // runs.csv exists (the report can be written from summary.json alone)
+};
+
+extern const char* const kStyle;  // the page's whole stylesheet
+
+// The colour of planner configuration `i` in every table swatch and chart of the page.
+std::string planner_color(std::size_t i);
+
+// Planner configurations and a problems x planners matrix of mean cost, CV and solved %.
+void overview(std::ostream& out, const Experiment& e, const nlohmann::json& problems);
+// The paper's Table 1 for one problem (summary.json's entry), extended with the five-number
+// summary and median time, nodes and path length.
+void cost_table(std::ostream& out, const nlohmann::json& problem);
+// Box plot of every planner's run cost and one histogram per planner on shared bins and axes; a
+// log scale when the costs span more than kLogSpan.
+void charts(std::ostream& out, const Experiment& e, const std::vector<std::vector<double>>& cost);
+inline constexpr double kLogSpan = 30.0;
+
+}  // namespace amp::bench::report_page

@@ -1,0 +1,30 @@
+#pragma once
+// Private to the report (src/bench/report*.cpp): numbers as the page prints them, and the tests
+// of summary.json in words.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace amp::bench::report_text {
+
+// A statistic of summary.json: NaN when the key is missing or null (JSON has no NaN).
+double number_at(const nlohmann::json& j, const char* key);
+
+// Every formatter prints a non-finite value as an en dash, never "nan".
+std::string count(double v);             // 2,021,367 (grouped, whole) from 100 on; 12.5 below
+std::string statistic(double v);         // F or H: 5.04, 12.3, 718
+std::string degrees_of_freedom(double v);  // 717 or 451.3
+std::string p_value(double p);           // "p = 0.0071", "p < 0.0001"
+std::string percent(double v);           // "31 %", "66.7 %", "4.2 %"
+std::string seconds(double v);           // "0.42 ms", "12.3 ms", "1.23 s"
+std::string real(double v);              // 4 significant digits: 123.4, 0.01234
+
+// The findings of one problem of summary.json, as HTML fragments (text escaped, planner names in
+// <strong>): lowest mean and CV, unsolved runs, then each test between planners in words, at the
+// REGWQ level alpha, e.g. "Brown–Forsythe test ...: the variances of run cost differ significantly
+// (F(2, 717) = 5.04, p = 0.0071)". A problem with one planner, or tests skipped or degenerate,
+// gets a sentence saying so.
+std::vector<std::string> findings(const nlohmann::json& problem);
+
+}  // namespace amp::bench::report_text

@@ -1,0 +1,118 @@
+#include "amp/bench/summary.hpp"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "amp/bench/anova.hpp"
+#include "amp/bench/descriptive.hpp"
+#include "amp/bench/histogram.hpp"
+#include "amp/bench/kruskal_wallis.hpp"
+#include "amp/bench/levene_test.hpp"
+#include "amp/bench/regwq.hpp"
+#include "amp/bench/welch_anova.hpp"
+
+namespace amp::bench {
+
+namespace {
+
+// JSON has no NaN: statistics that do not exist (n < 2, zero variance) are written as null.
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json describe_json(const std::vector<double>& x) {
+  const Summary s = describe(x);
+  nlohmann::json j = {{"n", s.n},          {"mean", num(s.mean)},     {"std", num(s.std_dev)},
+                      {"cv_percent", num(s.cv_percent)}, {"min", num(s.min)}, {"q1", num(s.q1)},
+                      {"median", num(s.median)},         {"q3", num(s.q3)},   {"max", num(s.max)}};
+  if (!x.empty()) {
+    const Histogram h = histogram(x);
+    j["histogram"] = {{"edges", h.edges}, {"counts", h.counts}};
+  }
+  return j;
+}
+
+nlohmann::json test_json(const TestResult& t) {
+  return {{"statistic", num(t.statistic)}, {"df1", num(t.df1)}, {"df2", num(t.df2)}, {"p_value", num(t.p_value)},
+          {"status", std::string(to_string(t.status))}};
+}
+
+nlohmann::json tests_json(const Experiment& e, const std::vector<GroupMetrics>& groups, double alpha) {
+  Groups cost;
+  for (const auto& g : groups) cost.push_back(g.cd_calls);
+  for (const auto& g : cost) {
+    if (g.size() < 2) return {{"skipped", "every planner needs at least two runs"}};
+  }
+  nlohmann::json j;
+  j["metric"] = "cd_calls";
+  j["levene_brown_forsythe"] = test_json(levene_test(cost, LeveneCenter::kMedian));
+  j["anova"] = test_json(one_way_anova(cost).test);
+  j["welch_anova"] = test_json(welch_anova(cost));
+  j["kruskal_wallis"] = test_json(kruskal_wallis(cost));
+  const RegwqResult r = regwq(cost, alpha);
+  nlohmann::json subsets = nlohmann::json::array();
+  for (const auto& s : r.subsets) {
+    nlohmann::json names = nlohmann::json::array();
+    for (std::size_t g : s) names.push_back(e.planners[g].label);
+    subsets.push_back(names);
+  }
+  nlohmann::json pairs = nlohmann::json::array();
+  for (std::size_t a = 0; a < groups.size(); ++a) {
+    for (std::size_t b = a + 1; b < groups.size(); ++b) {
+      pairs.push_back({{"a", e.planners[a].label}, {"b", e.planners[b].label},
+                       {"differs", r.status == TestStatus::kOk && r.differs[a][b]}});
+    }
+  }
+  j["regwq"] = {{"alpha", alpha}, {"status", std::string(to_string(r.status))}, {"subsets", subsets},
+                {"pairs", pairs}, {"mse", num(r.mse)}, {"df_error", num(r.df_error)}};
+  return j;
+}
+
+}  // namespace
+
+void GroupMetrics::add(const Trial& t) {
+  const core::RunRecord& r = t.record;
+  cd_calls.push_back(static_cast<double>(r.cd_calls()));
+  time_s.push_back(r.wall_time_s);
+  nodes.push_back(static_cast<double>(r.nodes));
+  if (r.status == core::PlanStatus::kSolved) path_length.push_back(r.path_length);
+  ++statuses[std::string(core::to_string(r.status))];
+}
+
+ExperimentMetrics empty_metrics(const Experiment& e) {
+  return ExperimentMetrics(e.problems.size(), std::vector<GroupMetrics>(e.planners.size()));
+}
+
+nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, double alpha) {
+  nlohmann::json out;
+  out["experiment"] = {{"name", e.name},
+                       {"seed", e.seed},
+                       {"runs", e.runs},
+                       {"time_limit_s", e.time_limit_s},
+                       {"node_limit", e.node_limit},
+                       {"fingerprint", e.fingerprint},
+                       {"censoring", "runs stopped at a limit enter cost statistics with the cost spent"}};
+  out["problems"] = nlohmann::json::array();
+  for (std::size_t p = 0; p < e.problems.size(); ++p) {
+    nlohmann::json pj = {{"name", e.problems[p].label}, {"file", e.problems[p].file.string()}};
+    pj["planners"] = nlohmann::json::array();
+    for (std::size_t c = 0; c < e.planners.size(); ++c) {
+      const GroupMetrics& g = metrics[p][c];
+      const std::size_t solved = g.statuses.count("solved") != 0 ? g.statuses.at("solved") : 0;
+      pj["planners"].push_back({{"name", e.planners[c].label},
+                                {"planner", e.planners[c].planner},
+                                {"n", g.runs()},
+                                {"solved", solved},
+                                {"solved_percent", g.runs() ? 100.0 * solved / g.runs() : 0.0},
+                                {"statuses", g.statuses},
+                                {"cd_calls", describe_json(g.cd_calls)},
+                                {"time_s", describe_json(g.time_s)},
+                                {"nodes", describe_json(g.nodes)},
+                                {"path_length", describe_json(g.path_length)}});
+    }
+    if (e.planners.size() >= 2) pj["tests"] = tests_json(e, metrics[p], alpha);
+    out["problems"].push_back(std::move(pj));
+  }
+  return out;
+}
+
+}  // namespace amp::bench
