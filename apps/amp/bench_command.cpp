@@ -155,7 +155,8 @@ int run_bench(const BenchOptions& o) {
   }
   if (mpi.rank() == 0) {
     std::cout << "wrote " << (mpi.active() ? e.trial_count() : r.written) << " runs in "
-              << format_duration(r.wall_time_s) << ": " << (out / "runs.csv").string()
+              << format_duration(r.wall_time_s) << " (outputs " << format_duration(r.outputs_time_s) << "): "
+              << (out / "runs.csv").string()
               << ", summary.json, results.db, report.html" << (o.ompl_log ? ", ompl-logs/" : "") << '\n';
   }
   return kExitOk;

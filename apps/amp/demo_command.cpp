@@ -5,6 +5,8 @@
 #include <iostream>
 #include <memory>
 
+#include "amp/bench/bench_runner.hpp"
+#include "amp/bench/experiment.hpp"
 #include "amp/core/path_file.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/viz/scene_renderer.hpp"
@@ -26,6 +28,7 @@ struct DemoOptions {
   std::string out = "out/demo";
   std::uint64_t seed = 1;
   double time_limit = 60.0;
+  int bench_runs = 20;
 };
 
 int run_demo(const DemoOptions& o) {
@@ -72,6 +75,19 @@ int run_demo(const DemoOptions& o) {
   }
   std::printf("\n%d of %zu problems solved; open %s/*.svg in a browser.\n",
               static_cast<int>(std::size(kDemoProblems)) - failures, std::size(kDemoProblems), out.string().c_str());
+
+  // The benchmark harness on a reduced experiment: run-cost statistics, database and report.
+  bench::Experiment e = bench::load_experiment(dir / "experiments" / "quick.yaml");
+  e.runs = o.bench_runs;
+  e.fingerprint = bench::experiment_fingerprint(e);
+  bench::BenchOptions b;
+  b.out_dir = out / "bench";
+  b.force = true;  // the demo's own output directory, remade on every run
+  std::printf("\nBenchmark: %s, %zu problems x %zu planners x %d runs on all cores...\n", e.name.c_str(),
+              e.problems.size(), e.planners.size(), e.runs);
+  const bench::BenchResult r = bench::run_experiment(e, b);
+  std::printf("%zu runs in %.1f s: %s/report.html (and runs.csv, summary.json, results.db)\n", r.written,
+              r.wall_time_s, b.out_dir.string().c_str());
   return failures == 0 ? kExitOk : kExitNotSolved;
 }
 
@@ -83,6 +99,8 @@ void add_demo_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", o->out, "Output directory [out/demo]");
   cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());
   cmd->add_option("--time-limit", o->time_limit, "Time limit per problem in seconds [60]")->check(positive_number());
+  cmd->add_option("--bench-runs", o->bench_runs, "Runs per planner in the demo benchmark [20]")
+      ->check(positive_integer());
   cmd->callback([o, &exit_code] { exit_code = run_demo(*o); });
 }
 

@@ -210,7 +210,10 @@ BenchResult run_experiment(const Experiment& e, const BenchOptions& o) {
   if (!result.interrupted) {
     RunInfo info = current_run_info(threads);
     info.total_time_s = result.wall_time_s;
+    const auto outputs_start = std::chrono::steady_clock::now();
     write_outputs(e, o.out_dir, info, o.ompl_log);
+    result.outputs_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - outputs_start).count();
+    result.wall_time_s += result.outputs_time_s;
   }
   return result;
 }

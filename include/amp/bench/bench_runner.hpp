@@ -30,7 +30,8 @@ struct BenchResult {
   std::size_t written = 0;  // trials in runs.csv
   std::size_t total = 0;    // trials of this shard
   bool interrupted = false;
-  double wall_time_s = 0.0;
+  double wall_time_s = 0.0;     // the whole call
+  double outputs_time_s = 0.0;  // of which writing summary, database and report
 };
 
 // Runs an experiment's trials (this shard's, those not yet in runs.csv when resuming) on a pool of
