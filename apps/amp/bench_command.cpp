@@ -154,8 +154,10 @@ int run_bench(const BenchOptions& o) {
     mpi.barrier();
   }
   if (mpi.rank() == 0) {
-    std::cout << "wrote " << (mpi.active() ? e.trial_count() : r.written) << " runs in "
-              << format_duration(r.wall_time_s) << " (outputs " << format_duration(r.outputs_time_s) << "): "
+    char times[96];
+    std::snprintf(times, sizeof times, "%.2f s (runs %.2f s, outputs %.2f s)", r.wall_time_s,
+                  r.wall_time_s - r.outputs_time_s, r.outputs_time_s);
+    std::cout << "wrote " << (mpi.active() ? e.trial_count() : r.written) << " runs in " << times << ": "
               << (out / "runs.csv").string()
               << ", summary.json, results.db, report.html" << (o.ompl_log ? ", ompl-logs/" : "") << '\n';
   }
