@@ -26,9 +26,9 @@ void SvgCanvas::style_attrs(const Style& s) {
   if (s.round_joins) body_ << " stroke-linejoin=\"round\" stroke-linecap=\"round\"";
 }
 
-void SvgCanvas::polygon(const std::vector<Eigen::Vector2d>& pts, const Style& s) {
+void SvgCanvas::points_element(const char* tag, const std::vector<Eigen::Vector2d>& pts, const Style& s) {
   if (pts.size() < 2) return;
-  body_ << "<polygon points=\"";
+  body_ << '<' << tag << " points=\"";
   for (const auto& p : pts) {
     const auto q = to_px(p);
     body_ << q.x() << ',' << q.y() << ' ';
@@ -38,17 +38,9 @@ void SvgCanvas::polygon(const std::vector<Eigen::Vector2d>& pts, const Style& s)
   body_ << "/>\n";
 }
 
-void SvgCanvas::polyline(const std::vector<Eigen::Vector2d>& pts, const Style& s) {
-  if (pts.size() < 2) return;
-  body_ << "<polyline points=\"";
-  for (const auto& p : pts) {
-    const auto q = to_px(p);
-    body_ << q.x() << ',' << q.y() << ' ';
-  }
-  body_ << "\"";
-  style_attrs(s);
-  body_ << "/>\n";
-}
+void SvgCanvas::polygon(const std::vector<Eigen::Vector2d>& pts, const Style& s) { points_element("polygon", pts, s); }
+
+void SvgCanvas::polyline(const std::vector<Eigen::Vector2d>& pts, const Style& s) { points_element("polyline", pts, s); }
 
 void SvgCanvas::circle(const Eigen::Vector2d& c, double radius_world, const Style& s) {
   const auto q = to_px(c);

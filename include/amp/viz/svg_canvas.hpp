@@ -51,6 +51,7 @@ class SvgCanvas {
 
  private:
   void style_attrs(const Style& s);
+  void points_element(const char* tag, const std::vector<Eigen::Vector2d>& pts, const Style& s);
   Eigen::AlignedBox2d world_;
   double scale_;
   int margin_;

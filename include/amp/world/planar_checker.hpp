@@ -51,6 +51,8 @@ class PlanarChecker final : public ValidityChecker {
   // non-finite state.
   bool place(const State& s) const;
   bool inside_bounds() const;
+  template <class OnEdge, class OnCircle>
+  bool any_near(const Eigen::AlignedBox2d& box, OnEdge&& on_edge, OnCircle&& on_circle) const;
   bool polygon_hits_obstacles(int k) const;
   bool circle_hits_obstacles(int k) const;
   bool self_collides() const;

@@ -107,15 +107,15 @@ bool PlanarChecker::check(const State& s) const {
   return !(robot_.has_self_collision() && self_collides());
 }
 
-bool PlanarChecker::polygon_hits_obstacles(int k) const {
-  const std::span<const Eigen::Vector2d> v = placed(k);
-  const Eigen::AlignedBox2d& box = polygon_boxes_[k];
+template <class OnEdge, class OnCircle>
+bool PlanarChecker::any_near(const Eigen::AlignedBox2d& box, OnEdge&& on_edge, OnCircle&& on_circle) const {
+  // Visits each obstacle edge and circle whose cell and box meet `box` once (stamps), until a
+  // callback reports a hit.
   const PlanarGrid& grid = world_->grid();
   const auto& edges = world_->edges();
   int x0, y0, x1, y1;
   if (!grid.cell_range(box, x0, y0, x1, y1)) return false;  // off the grid: clear of every obstacle
   const std::uint32_t st = next_stamp();
-  const std::size_t n = v.size();
   for (int iy = y0; iy <= y1; ++iy) {
     for (int ix = x0; ix <= x1; ++ix) {
       const int cell = grid.cell_index(ix, iy);
@@ -123,7 +123,25 @@ bool PlanarChecker::polygon_hits_obstacles(int k) const {
         if (edge_stamp_[id] == st) continue;
         edge_stamp_[id] = st;
         const PlanarEdge& e = edges[id];
-        if (!e.box.intersects(box)) continue;
+        if (e.box.intersects(box) && on_edge(e, st)) return true;
+      }
+      for (int id : grid.circles_in(cell)) {
+        if (circle_stamp_[id] == st) continue;
+        circle_stamp_[id] = st;
+        if (world_->circle_boxes()[id].intersects(box) && on_circle(world_->obstacles().circles[id])) return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool PlanarChecker::polygon_hits_obstacles(int k) const {
+  const std::span<const Eigen::Vector2d> v = placed(k);
+  const Eigen::AlignedBox2d& box = polygon_boxes_[k];
+  const std::size_t n = v.size();
+  const bool hit = any_near(
+      box,
+      [&](const PlanarEdge& e, std::uint32_t st) {
         // Early exit: the edge's line leaves every robot vertex strictly on one side.
         bool pos = false, neg = false;
         for (std::size_t i = 0; i < n; ++i) {
@@ -142,16 +160,10 @@ bool PlanarChecker::polygon_hits_obstacles(int k) const {
           polygon_stamp_[p] = st;
           if (box.contains(world_->polygon_boxes()[p]) && point_in_polygon(e.a, v)) return true;
         }
-      }
-      for (int id : grid.circles_in(cell)) {
-        if (circle_stamp_[id] == st) continue;
-        circle_stamp_[id] = st;
-        if (!world_->circle_boxes()[id].intersects(box)) continue;
-        const Circle& c = world_->obstacles().circles[id];
-        if (polygon_circle_overlap(v, c.center, c.radius)) return true;
-      }
-    }
-  }
+        return false;
+      },
+      [&](const Circle& c) { return polygon_circle_overlap(v, c.center, c.radius); });
+  if (hit) return true;
   // No boundary contact: the robot polygon may still lie wholly inside an obstacle polygon.
   return world_->point_in_obstacle_polygon(v[0], parity_scratch_);
 }
@@ -160,30 +172,13 @@ bool PlanarChecker::circle_hits_obstacles(int k) const {
   const Eigen::Vector2d& c = circle_centers_[k];
   const double r = circles_[k].radius;
   const Eigen::AlignedBox2d box(c - Eigen::Vector2d::Constant(r), c + Eigen::Vector2d::Constant(r));
-  const PlanarGrid& grid = world_->grid();
-  const auto& edges = world_->edges();
-  int x0, y0, x1, y1;
-  if (!grid.cell_range(box, x0, y0, x1, y1)) return false;
-  const std::uint32_t st = next_stamp();
-  for (int iy = y0; iy <= y1; ++iy) {
-    for (int ix = x0; ix <= x1; ++ix) {
-      const int cell = grid.cell_index(ix, iy);
-      for (int id : grid.edges_in(cell)) {
-        if (edge_stamp_[id] == st) continue;
-        edge_stamp_[id] = st;
-        const PlanarEdge& e = edges[id];
-        if (!e.box.intersects(box)) continue;
-        if (point_segment_distance_sq(c, e.a, e.b) <= r * r) return true;
-      }
-      for (int id : grid.circles_in(cell)) {
-        if (circle_stamp_[id] == st) continue;
-        circle_stamp_[id] = st;
-        const Circle& o = world_->obstacles().circles[id];
+  const bool hit = any_near(
+      box, [&](const PlanarEdge& e, std::uint32_t) { return point_segment_distance_sq(c, e.a, e.b) <= r * r; },
+      [&](const Circle& o) {
         const double reach = r + o.radius;
-        if ((c - o.center).squaredNorm() <= reach * reach) return true;
-      }
-    }
-  }
+        return (c - o.center).squaredNorm() <= reach * reach;
+      });
+  if (hit) return true;
   // An obstacle polygon inside the disc would have an edge within r: only the centre is left.
   return world_->point_in_obstacle_polygon(c, parity_scratch_);
 }
