@@ -24,6 +24,8 @@ constexpr const char* kDemoProblems[] = {
     "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml",
 };
 
+constexpr std::size_t kMaxDrawnRoadmapNodes = 2000;
+
 struct DemoOptions {
   std::string out = "out/demo";
   std::uint64_t seed = 1;
@@ -67,7 +69,9 @@ int run_demo(const DemoOptions& o) {
       viz::write_text_file((out / (stem + ".path")).string(), core::format_path(*problem.space, run.path,
                                                                                core::PathFormat::kText));
     }
-    if (run.roadmap && problem.environment->workspace_dimension() == 2) {
+    // Roadmaps are drawn only while they stay readable (and the SVG small enough to open quickly).
+    if (run.roadmap && problem.environment->workspace_dimension() == 2 &&
+        run.roadmap->vertex_count() <= kMaxDrawnRoadmapNodes) {
       drawing = viz::drawing_of(*run.roadmap);
       scene.roadmap = &drawing;
     }
