@@ -57,7 +57,8 @@ TEST_P(BundledProblem, PrmSolvesItWithAValidReproduciblePath) {
 
 INSTANTIATE_TEST_SUITE_P(Problems, BundledProblem,
                          ::testing::Values("maze.yaml", "l-tunnel.yaml", "hook.yaml", "walls.yaml", "linkage.yaml",
-                                           "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml"),
+                                           "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml",
+                                           "ompl/gap_planar.cfg", "ompl/cage_window.cfg"),
                          [](const auto& info) {
                            std::string n = std::filesystem::path(info.param).stem().string();
                            for (char& c : n) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
