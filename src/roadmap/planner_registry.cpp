@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "amp/core/error.hpp"
+#include "amp/roadmap/hybrid_prm.hpp"
+#include "amp/roadmap/sampler_prms.hpp"
 
 namespace amp::roadmap {
 
@@ -41,6 +43,8 @@ const PlannerRegistry& builtin_planners() {
   static const PlannerRegistry registry = [] {
     PlannerRegistry r;
     register_prm(r);
+    register_sampler_prms(r);
+    register_hybrid_prm(r);
     return r;
   }();
   return registry;

@@ -36,13 +36,14 @@ class PrmRun {
       nn->reserve(std::min(stop.node_limit(), kMaxReservedNodes));
       connection_ = std::make_unique<KNearestConnection>(std::move(nn), static_cast<std::size_t>(settings.k));
     }
+    if (parts.observer) observer_ = parts.observer(ctx, *sampler_);
     const std::size_t k = static_cast<std::size_t>(settings.k);
     roadmap_->reserve(std::min(stop.node_limit(), kMaxReservedNodes), 2 * k);
     neighbors_.reserve(k);
   }
 
   PlanResult run(core::Rng& rng) {
-    for (const State& s : ctx_.seeds) seed_ids_.push_back(insert(s));
+    for (const State& s : ctx_.seeds) seed_ids_.push_back(insert(s, true));
     State q;
     PlanResult result;
     for (;;) {
@@ -56,7 +57,7 @@ class PrmRun {
         break;
       }
       if (sampler_->sample(rng, q)) {
-        insert(q);
+        insert(q, false);
       } else {
         ++failed_samples_;
       }
@@ -68,24 +69,35 @@ class PrmRun {
     result.extra["failed_samples"] = static_cast<double>(failed_samples_);
     if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_);
     if (settings_.smooth) result.extra["shortcuts"] = static_cast<double>(shortcuts_);
+    if (observer_) observer_->report(result.extra);
     result.roadmap = roadmap_;
     return result;
   }
 
  private:
-  // Adds q and tries its connection candidates (lazy: adds them unchecked).
-  VertexId insert(const State& q) {
+  // Adds q and tries its connection candidates (lazy: adds them unchecked). With an observer, also
+  // counts the distinct components q joins: an edge to a vertex not yet in q's component joins one
+  // more (union-find queries only: the run's CD calls and results are unchanged).
+  VertexId insert(const State& q, bool seed) {
     const VertexId v = roadmap_->add_vertex(q);
     connection_->candidates(*roadmap_, v, neighbors_);
+    Insertion info{v, seed, 0, 0, 0};
     for (const Neighbor& n : neighbors_) {
       if (settings_.skip_same_component && roadmap_->same_component(v, n.index)) continue;
+      ++info.attempts;
+      const bool joins = observer_ && !roadmap_->same_component(v, n.index);
       if (settings_.lazy) {
         roadmap_->add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
       } else if (local_planner_->connect(q, roadmap_->state(n.index))) {
         roadmap_->add_edge(v, n.index, n.distance);
+      } else {
+        continue;
       }
+      ++info.successes;
+      if (joins) ++info.components_joined;
     }
     connection_->add(v, q);
+    if (observer_) observer_->inserted(*roadmap_, info);
     return v;
   }
 
@@ -166,6 +178,7 @@ class PrmRun {
   std::unique_ptr<Sampler> sampler_;
   std::unique_ptr<LocalPlanner> local_planner_;
   std::unique_ptr<ConnectionStrategy> connection_;
+  std::unique_ptr<InsertionObserver> observer_;
   AStar astar_;
   std::vector<Neighbor> neighbors_;
   std::vector<VertexId> seed_ids_;

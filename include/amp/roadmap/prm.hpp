@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "amp/roadmap/connection_strategy.hpp"
+#include "amp/roadmap/insertion_observer.hpp"
 #include "amp/roadmap/local_planner.hpp"
 #include "amp/roadmap/planner.hpp"
 #include "amp/roadmap/sampler.hpp"
@@ -30,6 +31,9 @@ struct PrmParts {
   std::function<std::unique_ptr<Sampler>(const PlanningContext&)> sampler;
   std::function<std::unique_ptr<LocalPlanner>(const PlanningContext&)> local_planner;
   std::function<std::unique_ptr<ConnectionStrategy>(const PlanningContext&)> connection;
+  // Optional: told about every insertion (node classes, Hybrid PRM's rewards); gets the run's sampler
+  // so that an adaptive sampler can learn from its samples. Its report() goes into PlanResult::extra.
+  std::function<std::unique_ptr<InsertionObserver>(const PlanningContext&, Sampler&)> observer;
 };
 
 // Probabilistic roadmap (Kavraki, Svestka, Latombe & Overmars 1996): sample free states, connect

@@ -1,0 +1,36 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "amp/roadmap/hybrid_sampler.hpp"
+#include "amp/roadmap/planner.hpp"
+#include "amp/roadmap/prm.hpp"
+#include "amp/roadmap/sampling_domain.hpp"
+
+namespace amp::roadmap {
+
+class PlannerRegistry;
+
+struct HybridPrmSettings {
+  HybridSettings hybrid;
+  int k = 10;           // neighbours tried per new node (as `prm`)
+  bool bridge = false;  // add the bridge test as a fifth sampler
+  void validate() const;
+};
+
+// The UAS sampler set (seeds/uas-region-identification.txt, 4.1.2), each restricted to `domain`
+// (null = the whole space): uniform, Gaussian d = r, Gaussian d = 2r, OBPRM, and optionally the bridge
+// test (d = 2r); r = the robot's smallest diameter (1% of the space extent for a point robot).
+// Names: uniform, gaussian_r, gaussian_2r, obprm, bridge. Each counts into ctx.checker.
+std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
+                                                  std::shared_ptr<const SamplingDomain> domain, bool bridge);
+
+// Hybrid PRM: PRM whose sampler is a HybridSampler over make_uas_samplers(whole space), rewarded
+// by UAS's structural reward. Extras: cc_* node classes, prob_/samples_/chosen_<sampler>,
+// sampler_distance_fallback (1 when r = 0 and 1% of the extent stood in for it).
+std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings);
+
+// Adds `hybrid-prm` (parameters gamma, alpha, k, bridge).
+void register_hybrid_prm(PlannerRegistry& registry);
+
+}  // namespace amp::roadmap

@@ -1,0 +1,81 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "amp/roadmap/insertion_observer.hpp"
+#include "amp/roadmap/node_classifier.hpp"
+#include "amp/roadmap/sampler.hpp"
+#include "amp/roadmap/sampler_bandit.hpp"
+#include "amp/world/validity_checker.hpp"
+
+namespace amp::roadmap {
+
+struct HybridSettings {
+  double gamma = 0.5;  // share of random selection (UAS: equal weight to past performance and chance)
+  double alpha = 4.0;  // UAS reward exp(-alpha * v^2) for cc-expand / cc-oversample nodes
+  void validate() const;  // throws ParameterError
+};
+
+// One Hybrid PRM sampler set: a bandit over named samplers (Hsu, Sanchez-Ante & Sun 2005) rewarded by
+// the structural effect of each sample (UAS). sample() chooses a sampler and measures the CD calls it
+// spends; after PRM has inserted the sample, reward_last() updates the chosen sampler's weight. UAS
+// runs one HybridSampler per region, each over samplers restricted to that region's box.
+//
+// Cost: the sample's CD calls divided by the running mean CD calls per sample of this set (this
+// sample included), so that costs are near 1 and rhat is on the reward's scale; a sample that spent
+// no CD call counts as one.
+class HybridSampler final : public Sampler {
+ public:
+  struct Arm {
+    std::string name;
+    std::unique_ptr<Sampler> sampler;
+  };
+
+  // Throws ParameterError for bad settings or no arms.
+  HybridSampler(std::vector<Arm> arms, const world::ValidityChecker& checker, HybridSettings settings = {});
+
+  // A sample of the chosen sampler. When it fails, the arm is updated at once with reward 0 (which
+  // leaves its weight as it was: EXP3 updates only by the reward).
+  bool sample(core::Rng& rng, State& out) override;
+  // The UAS reward of the last sample, now inserted: 1 for cc-create / cc-merge, exp(-alpha v^2) else.
+  void reward_last(const Insertion& insertion);
+  double reward(const Insertion& insertion) const;
+
+  const SamplerBandit& bandit() const { return bandit_; }
+  const std::string& arm_name(std::size_t s) const { return arms_[s].name; }
+  std::uint64_t samples(std::size_t s) const { return samples_[s]; }  // successful samples of arm s
+  std::uint64_t chosen(std::size_t s) const { return chosen_[s]; }    // times arm s was chosen
+  // Normalised cost of a sample that spent `cd_calls` (updates the running mean).
+  double normalised_cost(std::uint64_t cd_calls);
+  // prob_<name>, samples_<name>, chosen_<name> for every arm, keys prefixed by `prefix`.
+  void report(std::map<std::string, double>& extra, const std::string& prefix = "") const;
+
+ private:
+  std::vector<Arm> arms_;
+  const world::ValidityChecker* checker_;
+  HybridSettings settings_;
+  SamplerBandit bandit_;
+  std::vector<std::uint64_t> samples_, chosen_;
+  std::uint64_t total_cost_ = 0, total_samples_ = 0;
+  std::size_t last_arm_ = 0;
+  double last_cost_ = 1.0;
+  bool pending_ = false;  // a successful sample awaits its reward
+};
+
+// Feeds every sampled insertion's reward to a HybridSampler and counts node classes; reports both.
+class HybridObserver final : public InsertionObserver {
+ public:
+  explicit HybridObserver(HybridSampler& sampler, std::map<std::string, double> constants = {})
+      : sampler_(&sampler), classes_(std::move(constants)) {}
+  void inserted(const Roadmap& roadmap, const Insertion& insertion) override;
+  void report(std::map<std::string, double>& extra) const override;
+
+ private:
+  HybridSampler* sampler_;
+  NodeClassCounter classes_;
+};
+
+}  // namespace amp::roadmap

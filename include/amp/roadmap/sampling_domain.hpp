@@ -1,0 +1,63 @@
+#pragma once
+#include <memory>
+
+#include <Eigen/Geometry>
+
+#include "amp/core/rng.hpp"
+#include "amp/core/space.hpp"
+#include "amp/core/state.hpp"
+
+namespace amp::world {
+class Environment;
+}
+
+namespace amp::roadmap {
+
+// Where a sampler draws its uniform states: the whole space, or a region of it (UAS runs one Hybrid
+// PRM per region, each sampling inside the region's box). Drawing costs no CD call.
+class SamplingDomain {
+ public:
+  virtual ~SamplingDomain() = default;
+  // A state uniform in the domain (and in the space's bounds), or false after a bounded number of
+  // rejected draws (a region may be a thin sliver of the space).
+  virtual bool sample(core::Rng& rng, State& out) const = 0;
+  virtual bool contains(const State& s) const = 0;
+};
+
+// The whole space.
+class WholeSpaceDomain final : public SamplingDomain {
+ public:
+  explicit WholeSpaceDomain(const core::Space& space) : space_(&space) {}
+  bool sample(core::Rng& rng, State& out) const override;
+  bool contains(const State& s) const override { return space_->in_bounds(s); }
+
+ private:
+  const core::Space* space_;
+};
+
+// A box over the robot's reference point (Environment::reference_point: the position of a rigid
+// body, the end effector of an arm), the form UAS regions take. Rejection sampling from the space:
+// exact for every robot, and cheap because drawing needs forward kinematics only, never a CD call.
+class ReferencePointBoxDomain final : public SamplingDomain {
+ public:
+  // Draws before sample() gives up.
+  static constexpr int kMaxDraws = 10000;
+
+  // Planar worlds: the box's z range is ignored. Throws ParameterError for an empty box.
+  ReferencePointBoxDomain(const core::Space& space, const world::Environment& environment, Eigen::AlignedBox3d box);
+  bool sample(core::Rng& rng, State& out) const override;
+  bool contains(const State& s) const override;
+  const Eigen::AlignedBox3d& box() const { return box_; }
+
+ private:
+  const core::Space* space_;
+  const world::Environment* environment_;
+  Eigen::AlignedBox3d box_;
+  bool planar_;
+};
+
+// The domain a null pointer stands for: the whole space.
+std::shared_ptr<const SamplingDomain> domain_or_whole(std::shared_ptr<const SamplingDomain> domain,
+                                                      const core::Space& space);
+
+}  // namespace amp::roadmap

@@ -1,0 +1,186 @@
+#include "amp/learn/ward.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/learn/elbow.hpp"
+
+namespace amp::learn {
+namespace {
+
+// Union-find over point indices, used to turn merges of representative points into cluster ids.
+class UnionFind {
+ public:
+  explicit UnionFind(int n) : parent_(static_cast<std::size_t>(n)) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int x) {
+    while (parent_[static_cast<std::size_t>(x)] != x) {
+      int& p = parent_[static_cast<std::size_t>(x)];
+      p = parent_[static_cast<std::size_t>(p)];  // path halving
+      x = p;
+    }
+    return x;
+  }
+  int unite(int a, int b) {  // returns the new root
+    a = find(a);
+    b = find(b);
+    parent_[static_cast<std::size_t>(b)] = a;
+    return a;
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// A merge found by the chain: slots are point indices standing for their clusters.
+struct RawMerge {
+  int slot_a;
+  int slot_b;
+  double height;
+};
+
+}  // namespace
+
+std::vector<int> WardDendrogram::cut(int c) const {
+  if (c < 1 || c > n) throw ParameterError("ward: cut: c = " + std::to_string(c) + " outside 1.." + std::to_string(n));
+  UnionFind uf(n);
+  // Merge i joins clusters a and b; track one member point of every cluster id.
+  std::vector<int> member(static_cast<std::size_t>(2 * n));
+  std::iota(member.begin(), member.begin() + n, 0);
+  for (int i = 0; i < n - c; ++i) {
+    const WardMerge& m = merges[static_cast<std::size_t>(i)];
+    member[static_cast<std::size_t>(n + i)] =
+        uf.unite(member[static_cast<std::size_t>(m.a)], member[static_cast<std::size_t>(m.b)]);
+  }
+  std::vector<int> root_label(static_cast<std::size_t>(n), -1);
+  std::vector<int> labels(static_cast<std::size_t>(n));
+  int next = 0;
+  for (int i = 0; i < n; ++i) {
+    int& l = root_label[static_cast<std::size_t>(uf.find(i))];
+    if (l < 0) l = next++;
+    labels[static_cast<std::size_t>(i)] = l;
+  }
+  return labels;
+}
+
+WardDendrogram ward_linkage(const Eigen::MatrixXd& points) {
+  validate_points(points, "ward");
+  const int n = static_cast<int>(points.rows());
+  const auto un = static_cast<std::size_t>(n);
+  // d2[i*n + j]: squared Ward distance between the clusters in slots i and j (initially |xi - xj|^2).
+  std::vector<double> d2(un * un, 0.0);
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const double d = (points.row(i) - points.row(j)).squaredNorm();
+      d2[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)] = d;
+      d2[static_cast<std::size_t>(j) * un + static_cast<std::size_t>(i)] = d;
+    }
+  }
+  auto at = [&](int i, int j) -> double& { return d2[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)]; };
+  std::vector<int> size(un, 1);
+  std::vector<char> active(un, 1);
+  std::vector<int> chain;
+  chain.reserve(un);
+  std::vector<RawMerge> raw;
+  raw.reserve(un);
+  int first_active = 0;
+  while (static_cast<int>(raw.size()) < n - 1) {
+    if (chain.empty()) {
+      while (!active[static_cast<std::size_t>(first_active)]) ++first_active;
+      chain.push_back(first_active);
+    }
+    // Grow the chain by nearest neighbours until two clusters are each other's nearest.
+    for (;;) {
+      const int a = chain.back();
+      const int prev = chain.size() >= 2 ? chain[chain.size() - 2] : -1;
+      int b = prev;  // prefer the previous element on ties, which guarantees termination
+      double best = prev >= 0 ? at(a, prev) : std::numeric_limits<double>::infinity();
+      for (int j = 0; j < n; ++j) {
+        if (j == a || !active[static_cast<std::size_t>(j)]) continue;
+        if (at(a, j) < best) {
+          best = at(a, j);
+          b = j;
+        }
+      }
+      if (b == prev) break;
+      chain.push_back(b);
+    }
+    const int a = chain.back();
+    chain.pop_back();
+    const int b = chain.back();
+    chain.pop_back();
+    const double dab = at(a, b);
+    raw.push_back({a, b, std::sqrt(dab)});
+    // The merged cluster lives in slot lo; hi is retired. Lance-Williams update for Ward on squared
+    // distances: d(k, a+b) = ((na+nk) d(k,a) + (nb+nk) d(k,b) - nk d(a,b)) / (na+nb+nk).
+    const int lo = std::min(a, b);
+    const int hi = std::max(a, b);
+    const double na = size[static_cast<std::size_t>(a)];
+    const double nb = size[static_cast<std::size_t>(b)];
+    for (int k = 0; k < n; ++k) {
+      if (!active[static_cast<std::size_t>(k)] || k == a || k == b) continue;
+      const double nk = size[static_cast<std::size_t>(k)];
+      const double d = ((na + nk) * at(k, a) + (nb + nk) * at(k, b) - nk * dab) / (na + nb + nk);
+      at(k, lo) = d;
+      at(lo, k) = d;
+    }
+    size[static_cast<std::size_t>(lo)] += size[static_cast<std::size_t>(hi)];
+    active[static_cast<std::size_t>(hi)] = 0;
+  }
+  // Sort by height (stable, so equal heights keep the chain's order) and name clusters as SciPy does.
+  std::stable_sort(raw.begin(), raw.end(), [](const RawMerge& x, const RawMerge& y) { return x.height < y.height; });
+  WardDendrogram out;
+  out.n = n;
+  out.merges.reserve(raw.size());
+  UnionFind uf(n);
+  std::vector<int> id(un);  // cluster id of each union-find root
+  std::iota(id.begin(), id.end(), 0);
+  std::vector<int> cluster_size(un, 1);
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const int ra = uf.find(raw[i].slot_a);
+    const int rb = uf.find(raw[i].slot_b);
+    const int ia = id[static_cast<std::size_t>(ra)];
+    const int ib = id[static_cast<std::size_t>(rb)];
+    const int sz = cluster_size[static_cast<std::size_t>(ra)] + cluster_size[static_cast<std::size_t>(rb)];
+    out.merges.push_back({std::min(ia, ib), std::max(ia, ib), raw[i].height, sz});
+    const int root = uf.unite(ra, rb);
+    id[static_cast<std::size_t>(root)] = n + static_cast<int>(i);
+    cluster_size[static_cast<std::size_t>(root)] = sz;
+  }
+  return out;
+}
+
+void WardSettings::validate() const {
+  if (max_clusters < 1) throw ParameterError("ward: max_clusters: " + std::to_string(max_clusters) + " < 1");
+}
+
+WardClustering::WardClustering(WardSettings settings) : settings_(settings) { settings_.validate(); }
+
+Clustering WardClustering::cluster(const Eigen::MatrixXd& points, core::Rng& /*rng*/) const {
+  const WardDendrogram tree = ward_linkage(points);
+  const int n = tree.n;
+  const int max_c = std::min(settings_.max_clusters, n);
+  // Merge i raises W by height^2 / 2, so W(c) = the sum of the first n - c raises.
+  double total = 0.0;
+  for (const WardMerge& m : tree.merges) total += 0.5 * m.height * m.height;
+  Clustering out;
+  out.curve.resize(static_cast<std::size_t>(max_c));
+  double w = 0.0;
+  for (int i = 0; i < n - 1; ++i) {
+    w += 0.5 * tree.merges[static_cast<std::size_t>(i)].height * tree.merges[static_cast<std::size_t>(i)].height;
+    const int c = n - 1 - i;  // clusters left after merge i
+    if (c <= max_c) out.curve[static_cast<std::size_t>(c - 1)] = total > 0.0 ? w / total : 0.0;
+  }
+  if (max_c == n) out.curve[static_cast<std::size_t>(n - 1)] = 0.0;  // n singletons: W = 0
+  out.curve[0] = total > 0.0 ? 1.0 : 0.0;
+  const int c = elbow_choice(out.curve);
+  out.labels = tree.cut(c);
+  out.centres = cluster_means(points, out.labels, c);
+  out.c = canonicalise(out.labels, out.centres);
+  return out;
+}
+
+}  // namespace amp::learn
