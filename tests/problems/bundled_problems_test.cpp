@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/path_checks.hpp"
+
 #include "amp/core/counters.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
@@ -20,23 +22,6 @@ std::filesystem::path problem_file(const std::string& name) {
   return std::filesystem::path(AMP_SOURCE_DIR) / "problems" / name;
 }
 
-void expect_valid_path(const world::Problem& p, const std::vector<State>& path) {
-  ASSERT_GE(path.size(), 2u);
-  EXPECT_LT(p.space->distance(path.front(), p.start()), 1e-9);
-  EXPECT_LT(p.space->distance(path.back(), p.goal()), 1e-9);
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  const double step = p.space->resolution();
-  State s;
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const double d = p.space->distance(path[i], path[i + 1]);
-    const int n = std::max(1, static_cast<int>(std::ceil(d / step)));
-    for (int k = 0; k <= n; ++k) {
-      p.space->interpolate(path[i], path[i + 1], static_cast<double>(k) / n, s);
-      ASSERT_TRUE(checker->is_valid(s)) << p.name << ": edge " << i << " collides at t = " << double(k) / n;
-    }
-  }
-}
 
 class BundledProblem : public ::testing::TestWithParam<std::string> {};
 
@@ -44,7 +29,7 @@ TEST_P(BundledProblem, PrmSolvesItWithAValidReproduciblePath) {
   const world::Problem p = world::load_problem(problem_file(GetParam()));
   const auto a = roadmap::execute_run(p, "prm", {}, 1, p.defaults.time_limit_s, p.defaults.node_limit);
   ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << p.name << ": " << a.record.message;
-  expect_valid_path(p, a.path);
+  amp::test::expect_valid_path(p, a.path);
   EXPECT_GT(a.record.cd_calls(), 0u);
   EXPECT_GT(a.record.path_length, 0.0);
 

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/path_checks.hpp"
+
 #include "amp/roadmap/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/roadmap/sampler_bandit.hpp"
@@ -122,22 +124,6 @@ const world::Problem& bundled(const std::string& name) {
   return name == "walls" ? walls : maze;
 }
 
-void expect_valid_path(const world::Problem& p, const std::vector<State>& path) {
-  ASSERT_GE(path.size(), 2u);
-  EXPECT_EQ(path.front(), p.seeds.front());
-  EXPECT_EQ(path.back(), p.seeds.back());
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  State s;
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    const double d = p.space->distance(path[i - 1], path[i]);
-    const int n = std::max(1, static_cast<int>(std::ceil(d / p.space->resolution())));
-    for (int j = 0; j <= n; ++j) {
-      p.space->interpolate(path[i - 1], path[i], static_cast<double>(j) / n, s);
-      ASSERT_TRUE(checker->is_valid(s)) << "edge " << i << " step " << j << "/" << n;
-    }
-  }
-}
 
 class SamplerPlanners : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
@@ -146,7 +132,7 @@ TEST_P(SamplerPlanners, SolveWithValidPathsAndRepeatBitForBit) {
   const world::Problem& p = bundled(problem);
   const RunOutcome a = execute_run(p, planner, {}, 21, kNoTimeLimit, kNodeLimit);
   ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << planner << " on " << problem;
-  expect_valid_path(p, a.path);
+  amp::test::expect_valid_path(p, a.path);
   const RunOutcome b = execute_run(p, planner, {}, 21, kNoTimeLimit, kNodeLimit);
   EXPECT_EQ(a.path, b.path);
   EXPECT_EQ(a.record.cd_calls(), b.record.cd_calls());

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/path_checks.hpp"
+
 #include "amp/roadmap/path_smoothing.hpp"
 #include "test_worlds.hpp"
 
@@ -33,30 +35,13 @@ Outcome run_prm(const world::Problem& p, PrmSettings settings, std::uint64_t see
   return o;
 }
 
-// Every edge re-checked at 4x the space's resolution by an independent checker.
-void expect_valid_path(const world::Problem& p, const std::vector<State>& path) {
-  ASSERT_GE(path.size(), 2u);
-  EXPECT_EQ(path.front(), p.seeds.front());
-  EXPECT_EQ(path.back(), p.seeds.back());
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  State s;
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    const double d = p.space->distance(path[i - 1], path[i]);
-    const int n = 4 * std::max(1, static_cast<int>(std::ceil(d / p.space->resolution())));
-    for (int j = 0; j <= n; ++j) {
-      p.space->interpolate(path[i - 1], path[i], static_cast<double>(j) / n, s);
-      ASSERT_TRUE(checker->is_valid(s)) << "edge " << i << " step " << j << "/" << n;
-    }
-  }
-}
 
 TEST(Prm, SolvesTheNarrowGap) {
   const world::Problem p = test::point_problem(true);
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     const Outcome o = run_prm(p, {}, seed);
     ASSERT_EQ(o.result.status, core::PlanStatus::kSolved) << seed;
-    expect_valid_path(p, o.result.path);
+    amp::test::expect_valid_path(p, o.result.path, 4);
     // The path crosses the wall inside the gap.
     ASSERT_NE(o.result.roadmap, nullptr);
     EXPECT_EQ(o.result.nodes, o.result.roadmap->vertex_count());
@@ -71,7 +56,7 @@ TEST(Prm, SolvesTheArm) {
   const world::Problem p = test::arm_problem();
   const Outcome o = run_prm(p, {}, 5);
   ASSERT_EQ(o.result.status, core::PlanStatus::kSolved);
-  expect_valid_path(p, o.result.path);
+  amp::test::expect_valid_path(p, o.result.path, 4);
   EXPECT_GT(o.result.path.size(), 2u);  // the direct swing hits the box
 }
 
@@ -100,14 +85,14 @@ TEST(Prm, LazyAndSmoothedPathsAreValid) {
   lazy.lazy = true;
   const Outcome l = run_prm(p, lazy, 9);
   ASSERT_EQ(l.result.status, core::PlanStatus::kSolved);
-  expect_valid_path(p, l.result.path);
+  amp::test::expect_valid_path(p, l.result.path, 4);
   EXPECT_GT(l.result.extra.at("lazy_edges_removed"), 0.0);  // the wall forces removals
 
   PrmSettings smooth;
   smooth.smooth = true;
   const Outcome raw = run_prm(p, {}, 9), smoothed = run_prm(p, smooth, 9);
   ASSERT_EQ(smoothed.result.status, core::PlanStatus::kSolved);
-  expect_valid_path(p, smoothed.result.path);
+  amp::test::expect_valid_path(p, smoothed.result.path, 4);
   // Same seed: the same roadmap, then shortcuts only shorten the path (triangle inequality).
   EXPECT_EQ(raw.result.nodes, smoothed.result.nodes);
   EXPECT_LE(path_length(*p.space, smoothed.result.path), path_length(*p.space, raw.result.path) + 1e-12);
@@ -120,7 +105,7 @@ TEST(Prm, SkipSameComponentBuildsAForest) {
   s.skip_same_component = true;
   const Outcome o = run_prm(p, s, 4);
   ASSERT_EQ(o.result.status, core::PlanStatus::kSolved);
-  expect_valid_path(p, o.result.path);
+  amp::test::expect_valid_path(p, o.result.path, 4);
   EXPECT_EQ(o.result.edges + o.result.components, o.result.nodes);  // a forest: E = V - C
 }
 
@@ -129,7 +114,7 @@ TEST(Prm, ConnectsEverySeedInOrder) {
   p.seeds = {test::state2(1, 1), test::state2(9, 9), test::state2(1, 9)};
   const Outcome o = run_prm(p, {}, 6);
   ASSERT_EQ(o.result.status, core::PlanStatus::kSolved);
-  expect_valid_path(p, o.result.path);
+  amp::test::expect_valid_path(p, o.result.path, 4);
   EXPECT_NE(std::find(o.result.path.begin(), o.result.path.end(), p.seeds[1]), o.result.path.end());
 }
 
