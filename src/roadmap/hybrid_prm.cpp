@@ -68,6 +68,8 @@ void register_hybrid_prm(PlannerRegistry& registry) {
       {
           {"gamma", ParamType::kReal, d.hybrid.gamma, 1e-6, 1, {}, "share of random sampler selection"},
           {"alpha", ParamType::kReal, d.hybrid.alpha, 1e-6, kMaxAlpha, {}, "reward exp(-alpha v^2) of non-structural nodes"},
+          {"cost", ParamType::kChoice, "node", 0, 0, {"node", "sampling"},
+           "a sample's cost: CD calls to sample and connect it (node) or to sample it only"},
           {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
           {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
       }};
@@ -75,6 +77,7 @@ void register_hybrid_prm(PlannerRegistry& registry) {
     HybridPrmSettings s;
     s.hybrid.gamma = p.real("gamma");
     s.hybrid.alpha = p.real("alpha");
+    s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
     s.k = static_cast<int>(p.integer("k"));
     s.bridge = p.boolean("bridge");
     return make_hybrid_prm(s);

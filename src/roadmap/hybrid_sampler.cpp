@@ -50,15 +50,15 @@ bool HybridSampler::sample(core::Rng& rng, State& out) {
   ++chosen_[s];
   const std::uint64_t before = checker_->counters().cd_calls();
   const bool ok = arms_[s].sampler->sample(rng, out);
-  const double cost = normalised_cost(checker_->counters().cd_calls() - before);
   if (!ok) {
-    bandit_.update(s, 0.0, cost);
+    bandit_.update(s, 0.0, normalised_cost(checker_->counters().cd_calls() - before));
     pending_ = false;
     return false;
   }
   ++samples_[s];
   last_arm_ = s;
-  last_cost_ = cost;
+  if (settings_.cost == SampleCost::kSampling) last_cost_ = normalised_cost(checker_->counters().cd_calls() - before);
+  cd_at_sample_ = before;
   pending_ = true;
   return true;
 }
@@ -76,7 +76,10 @@ double HybridSampler::reward(const Insertion& insertion) const {
 
 void HybridSampler::reward_last(const Insertion& insertion) {
   if (!pending_) return;  // nothing sampled since the last reward (e.g. a seed)
-  bandit_.update(last_arm_, reward(insertion), last_cost_);
+  const double cost = settings_.cost == SampleCost::kNode
+                          ? normalised_cost(checker_->counters().cd_calls() - cd_at_sample_)
+                          : last_cost_;
+  bandit_.update(last_arm_, reward(insertion), cost);
   pending_ = false;
 }
 

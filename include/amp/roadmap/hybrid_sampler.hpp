@@ -13,9 +13,21 @@
 
 namespace amp::roadmap {
 
+// What a sample's cost counts (SPEC: "the CD calls the sample took").
+enum class SampleCost : std::uint8_t {
+  // Sampling and connecting: every CD call between drawing the sample and its insertion. This is
+  // what the node cost the planner, and it keeps cheap-to-draw samplers from winning on cost alone
+  // (uniform draws cost ~1 CD call, Gaussian and OBPRM 5-20, but connecting any of them to k
+  // neighbours costs 10-100x more: with sampling cost only, Hybrid PRM settled on uniform, see
+  // docs/uas.md).
+  kNode = 0,
+  kSampling = 1,  // sampling only (the sampler's own CD calls)
+};
+
 struct HybridSettings {
   double gamma = 0.5;  // share of random selection (UAS: equal weight to past performance and chance)
   double alpha = 4.0;  // UAS reward exp(-alpha * v^2) for cc-expand / cc-oversample nodes
+  SampleCost cost = SampleCost::kNode;
   void validate() const;  // throws ParameterError
 };
 
@@ -24,9 +36,9 @@ struct HybridSettings {
 // spends; after PRM has inserted the sample, reward_last() updates the chosen sampler's weight. UAS
 // runs one HybridSampler per region, each over samplers restricted to that region's box.
 //
-// Cost: the sample's CD calls divided by the running mean CD calls per sample of this set (this
-// sample included), so that costs are near 1 and rhat is on the reward's scale; a sample that spent
-// no CD call counts as one.
+// Cost: the sample's CD calls (settings.cost says which) divided by the running mean of those costs in
+// this set (this one included), so that costs are near 1 and rhat is on the reward's scale; a sample
+// that spent no CD call counts as one. A failed sample costs its sampling CD calls.
 class HybridSampler final : public Sampler {
  public:
   struct Arm {
@@ -61,7 +73,8 @@ class HybridSampler final : public Sampler {
   std::vector<std::uint64_t> samples_, chosen_;
   std::uint64_t total_cost_ = 0, total_samples_ = 0;
   std::size_t last_arm_ = 0;
-  double last_cost_ = 1.0;
+  double last_cost_ = 1.0;         // kSampling: the normalised cost of the pending sample
+  std::uint64_t cd_at_sample_ = 0;  // kNode: the CD count when the pending sample was drawn
   bool pending_ = false;  // a successful sample awaits its reward
 };
 
