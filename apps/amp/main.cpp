@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   int exit_code = amp::cli::kExitOk;
   amp::cli::add_plan_command(app, exit_code);
   amp::cli::add_render_command(app, exit_code);
+  amp::cli::add_regions_command(app, exit_code);
   amp::cli::add_bench_command(app, exit_code);
   amp::cli::add_demo_command(app, exit_code);
   try {

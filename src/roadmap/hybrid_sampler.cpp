@@ -57,7 +57,8 @@ bool HybridSampler::sample(core::Rng& rng, State& out) {
   }
   ++samples_[s];
   last_arm_ = s;
-  if (settings_.cost == SampleCost::kSampling) last_cost_ = normalised_cost(checker_->counters().cd_calls() - before);
+  sampling_cd_calls_ = checker_->counters().cd_calls() - before;
+  if (settings_.cost == SampleCost::kSampling) last_cost_ = normalised_cost(sampling_cd_calls_);
   cd_at_sample_ = before;
   pending_ = true;
   return true;
@@ -76,14 +77,15 @@ double HybridSampler::reward(const Insertion& insertion) const {
 
 void HybridSampler::reward_last(const Insertion& insertion) {
   if (!pending_) return;  // nothing sampled since the last reward (e.g. a seed)
-  const double cost = settings_.cost == SampleCost::kNode
-                          ? normalised_cost(checker_->counters().cd_calls() - cd_at_sample_)
-                          : last_cost_;
-  bandit_.update(last_arm_, reward(insertion), cost);
+  last_cd_calls_ = settings_.cost == SampleCost::kNode ? checker_->counters().cd_calls() - cd_at_sample_
+                                                      : sampling_cd_calls_;
+  const double cost = settings_.cost == SampleCost::kNode ? normalised_cost(last_cd_calls_) : last_cost_;
+  last_reward_ = reward(insertion);
+  bandit_.update(last_arm_, last_reward_, cost);
   pending_ = false;
 }
 
-void HybridSampler::report(std::map<std::string, double>& extra, const std::string& prefix) const {
+void HybridSampler::report_with_prefix(std::map<std::string, double>& extra, const std::string& prefix) const {
   for (std::size_t s = 0; s < arms_.size(); ++s) {
     extra[prefix + "prob_" + arms_[s].name] = bandit_.probabilities()[s];
     extra[prefix + "samples_" + arms_[s].name] = static_cast<double>(samples_[s]);

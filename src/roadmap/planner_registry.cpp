@@ -4,6 +4,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/roadmap/hybrid_prm.hpp"
+#include "amp/roadmap/uas.hpp"
 #include "amp/roadmap/sampler_prms.hpp"
 
 namespace amp::roadmap {
@@ -45,6 +46,7 @@ const PlannerRegistry& builtin_planners() {
     register_prm(r);
     register_sampler_prms(r);
     register_hybrid_prm(r);
+    register_uas(r);
     return r;
   }();
   return registry;

@@ -38,6 +38,10 @@ class PrmRun {
     }
     if (parts.observer) observer_ = parts.observer(ctx, *sampler_);
     const std::size_t k = static_cast<std::size_t>(settings.k);
+    if (parts.initial) {
+      *roadmap_ = *parts.initial;
+      for (VertexId v = 0; v < roadmap_->vertex_count(); ++v) connection_->add(v, roadmap_->state(v));
+    }
     roadmap_->reserve(std::min(stop.node_limit(), kMaxReservedNodes), 2 * k);
     neighbors_.reserve(k);
   }

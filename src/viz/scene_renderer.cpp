@@ -92,7 +92,8 @@ std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<St
 // 3-D worlds are drawn see-through so that stacked obstacles (floors, walls) read as darker.
 constexpr double kTopViewOpacity = 0.55;
 
-void legend(SvgCanvas& c, bool has_path, bool has_roadmap, double obstacle_opacity, bool has_unknown) {
+void legend(SvgCanvas& c, bool has_path, bool has_roadmap, bool has_regions, double obstacle_opacity,
+            bool has_unknown) {
   double x = 24;
   const double y = c.height_px() - kFooterPx / 2.0;
   auto item = [&](const char* color, const char* label, double opacity) {
@@ -106,6 +107,7 @@ void legend(SvgCanvas& c, bool has_path, bool has_roadmap, double obstacle_opaci
   item(kGoalColor, "goal", 0.8);
   if (has_path) item(kPathColor, "path", 0.6);
   if (has_roadmap) item(kRoadmapNode, "roadmap", 0.8);
+  if (has_regions) item(cluster_color(0), "regions (colour = cluster)", 0.5);
 }
 
 }  // namespace
@@ -132,7 +134,14 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
     pts.reserve(rm.vertices.size());
     for (const auto& v : rm.vertices) pts.push_back(env.reference_point(v).head<2>());
     for (const auto& [a, b] : rm.edges) c.line(pts[a], pts[b], Style{"none", kRoadmapEdge, 0.7});
-    for (const auto& p : pts) c.dot(p, 1.6, Style{kRoadmapNode, "none", 0, 0.9});
+    const bool labelled = rm.labels.size() == pts.size();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (labelled) {
+        c.dot(pts[i], 3.2, Style{cluster_color(rm.labels[i]), "#ffffff", 0.6, 0.95});
+      } else {
+        c.dot(pts[i], 1.6, Style{kRoadmapNode, "none", 0, 0.9});
+      }
+    }
     c.end_group();
   }
 
@@ -144,6 +153,23 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
   // triangles of a mesh disappear; the group carries the opacity.
   draw_shapes(c, outline.shapes, Style{kObstacleFill, kObstacleFill, 0.8, 1.0});
   c.end_group();
+
+  if (options.regions != nullptr) {
+    c.begin_group("regions");
+    for (const RegionDrawing& r : *options.regions) {
+      c.rect(r.box, Style{cluster_color(r.cluster), "none", 0, 0.10});
+      c.rect(r.box, Style{"none", cluster_color(r.cluster), 2.0, 0.9});
+    }
+    // Labels at the boxes' top-left corners, stepped down by index: overlapping boxes often share
+    // a corner (both touch the world's border).
+    for (std::size_t i = 0; i < options.regions->size(); ++i) {
+      const RegionDrawing& r = (*options.regions)[i];
+      const Eigen::Vector2d corner = c.to_px(Eigen::Vector2d(r.box.min().x(), r.box.max().y()));
+      c.text_px(corner.x() + 4, corner.y() + 14 + 14 * static_cast<double>(i), r.label, 12, cluster_color(r.cluster),
+                "start", true);
+    }
+    c.end_group();
+  }
 
   if (options.path != nullptr && !options.path->empty()) {
     c.begin_group("path");
@@ -165,9 +191,17 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
   c.end_group();
 
   const bool has_unknown = outline.grid != nullptr && outline.grid->count(world::CellState::kUnknown) > 0;
-  legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr, obstacle_opacity,
-         has_unknown);
+  legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr,
+         options.regions != nullptr && !options.regions->empty(), obstacle_opacity, has_unknown);
   return c.str();
+}
+
+const char* cluster_color(int cluster) {
+  // Tableau 10: distinct at a glance, and readable on the light background.
+  static constexpr const char* kPalette[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
+                                             "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
+  constexpr int n = static_cast<int>(std::size(kPalette));
+  return kPalette[((cluster % n) + n) % n];
 }
 
 RoadmapDrawing drawing_of(const roadmap::Roadmap& roadmap) {

@@ -31,6 +31,16 @@ struct HybridSettings {
   void validate() const;  // throws ParameterError
 };
 
+// A sampler that learns from what its last sample did once PRM inserted it (Hybrid PRM; UAS, which
+// routes the reward to the region that drew the sample).
+class AdaptiveSampler : public Sampler {
+ public:
+  // The last successful sample is now inserted; a call with nothing pending does nothing.
+  virtual void reward_last(const Insertion& insertion) = 0;
+  // Its per-run figures (PlanResult::extra).
+  virtual void report(std::map<std::string, double>& extra) const = 0;
+};
+
 // One Hybrid PRM sampler set: a bandit over named samplers (Hsu, Sanchez-Ante & Sun 2005) rewarded by
 // the structural effect of each sample (UAS). sample() chooses a sampler and measures the CD calls it
 // spends; after PRM has inserted the sample, reward_last() updates the chosen sampler's weight. UAS
@@ -39,7 +49,7 @@ struct HybridSettings {
 // Cost: the sample's CD calls (settings.cost says which) divided by the running mean of those costs in
 // this set (this one included), so that costs are near 1 and rhat is on the reward's scale; a sample
 // that spent no CD call counts as one. A failed sample costs its sampling CD calls.
-class HybridSampler final : public Sampler {
+class HybridSampler final : public AdaptiveSampler {
  public:
   struct Arm {
     std::string name;
@@ -53,7 +63,10 @@ class HybridSampler final : public Sampler {
   // leaves its weight as it was: EXP3 updates only by the reward).
   bool sample(core::Rng& rng, State& out) override;
   // The UAS reward of the last sample, now inserted: 1 for cc-create / cc-merge, exp(-alpha v^2) else.
-  void reward_last(const Insertion& insertion);
+  void reward_last(const Insertion& insertion) override;
+  // The reward and raw cost (CD calls, as settings.cost counts them) of the last rewarded sample.
+  double last_reward() const { return last_reward_; }
+  std::uint64_t last_cd_calls() const { return last_cd_calls_; }
   double reward(const Insertion& insertion) const;
 
   const SamplerBandit& bandit() const { return bandit_; }
@@ -63,7 +76,8 @@ class HybridSampler final : public Sampler {
   // Normalised cost of a sample that spent `cd_calls` (updates the running mean).
   double normalised_cost(std::uint64_t cd_calls);
   // prob_<name>, samples_<name>, chosen_<name> for every arm, keys prefixed by `prefix`.
-  void report(std::map<std::string, double>& extra, const std::string& prefix = "") const;
+  void report_with_prefix(std::map<std::string, double>& extra, const std::string& prefix) const;
+  void report(std::map<std::string, double>& extra) const override { report_with_prefix(extra, ""); }
 
  private:
   std::vector<Arm> arms_;
@@ -76,18 +90,21 @@ class HybridSampler final : public Sampler {
   double last_cost_ = 1.0;         // kSampling: the normalised cost of the pending sample
   std::uint64_t cd_at_sample_ = 0;  // kNode: the CD count when the pending sample was drawn
   bool pending_ = false;  // a successful sample awaits its reward
+  double last_reward_ = 0.0;
+  std::uint64_t last_cd_calls_ = 0;
+  std::uint64_t sampling_cd_calls_ = 0;  // of the pending sample
 };
 
-// Feeds every sampled insertion's reward to a HybridSampler and counts node classes; reports both.
+// Feeds every sampled insertion's reward to an AdaptiveSampler and counts node classes; reports both.
 class HybridObserver final : public InsertionObserver {
  public:
-  explicit HybridObserver(HybridSampler& sampler, std::map<std::string, double> constants = {})
+  explicit HybridObserver(AdaptiveSampler& sampler, std::map<std::string, double> constants = {})
       : sampler_(&sampler), classes_(std::move(constants)) {}
   void inserted(const Roadmap& roadmap, const Insertion& insertion) override;
   void report(std::map<std::string, double>& extra) const override;
 
  private:
-  HybridSampler* sampler_;
+  AdaptiveSampler* sampler_;
   NodeClassCounter classes_;
 };
 

@@ -34,6 +34,10 @@ struct PrmParts {
   // Optional: told about every insertion (node classes, Hybrid PRM's rewards); gets the run's sampler
   // so that an adaptive sampler can learn from its samples. Its report() goes into PlanResult::extra.
   std::function<std::unique_ptr<InsertionObserver>(const PlanningContext&, Sampler&)> observer;
+  // Optional: a roadmap of free vertices and checked edges built earlier in the same run (UAS's
+  // training roadmap) that the run starts from, so that work is not paid twice. Its vertices count
+  // towards the node limit; the observer is not told about them.
+  std::shared_ptr<const Roadmap> initial;
 };
 
 // Probabilistic roadmap (Kavraki, Svestka, Latombe & Overmars 1996): sample free states, connect

@@ -17,7 +17,19 @@ namespace amp::viz {
 struct RoadmapDrawing {
   std::vector<State> vertices;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
+  // Optional, one per vertex: its cluster, drawn in the cluster's colour (cluster_color()).
+  std::vector<int> labels;
 };
+
+// A region box over the world (UAS), outlined and labelled in its cluster's colour.
+struct RegionDrawing {
+  Eigen::AlignedBox2d box;
+  int cluster = 0;
+  std::string label;
+};
+
+// A categorical colour per cluster index (10 distinct colours, then repeating).
+const char* cluster_color(int cluster);
 
 // The vertices and (each undirected edge once) edges of a roadmap.
 RoadmapDrawing drawing_of(const roadmap::Roadmap& roadmap);
@@ -27,6 +39,7 @@ struct SceneOptions {
   std::string title;                          // defaults to the problem's name
   const std::vector<State>* path = nullptr;   // drawn with robot footprints along it
   const RoadmapDrawing* roadmap = nullptr;    // drawn under everything else
+  const std::vector<RegionDrawing>* regions = nullptr;  // drawn over the obstacles
   int footprints = 24;                        // robot footprints spread evenly along the path
 };
 

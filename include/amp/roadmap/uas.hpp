@@ -1,0 +1,84 @@
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "amp/roadmap/hybrid_sampler.hpp"
+#include "amp/roadmap/planner.hpp"
+#include "amp/roadmap/sampler_bandit.hpp"
+#include "amp/roadmap/uas_regions.hpp"
+
+namespace amp::roadmap {
+
+class PlannerRegistry;
+
+// How UAS picks the region that draws the next m samples.
+enum class RegionSchedule : std::uint8_t {
+  kRoundRobin = 0,  // the paper: every region in turn
+  // Beyond the paper: a bandit over regions with the same reward and cost as the samplers (EXP3,
+  // gamma as theirs), so that regions already covered (their samples are all cc-oversample) get
+  // fewer rounds; every region keeps at least gamma / |regions| of them.
+  kAdaptive = 1,
+};
+
+struct UasSettings {
+  RegionSettings regions;  // training roadmap, clustering, region growth
+  int m = 10;              // samples per region per round
+  RegionSchedule schedule = RegionSchedule::kRoundRobin;
+  int k = 20;              // neighbours tried per new node, in the whole roadmap
+  HybridSettings hybrid;   // each region's Hybrid PRM
+  bool bridge = false;     // the bridge test as a fifth sampler in every region
+  // Start the planning roadmap from the training roadmap (its nodes and checked edges), so the
+  // training CD calls also buy roadmap. Off: the paper's separate training and planning roadmaps.
+  bool reuse_training = true;
+  void validate() const;   // throws ParameterError
+};
+
+// Samples region by region, m at a time, each region by its own Hybrid PRM (sampler set restricted to
+// the region's box); the reward of a sample goes to the region that drew it. The next region is the
+// next in turn (round robin) or drawn by a bandit over regions (adaptive).
+class RegionalSampler final : public AdaptiveSampler {
+ public:
+  // Throws ParameterError for no regions or m < 1.
+  RegionalSampler(std::vector<std::unique_ptr<HybridSampler>> regions, int m,
+                  RegionSchedule schedule = RegionSchedule::kRoundRobin, double gamma = 0.5);
+  bool sample(core::Rng& rng, State& out) override;
+  void reward_last(const Insertion& insertion) override;
+  // samples_/chosen_<sampler> summed over regions; region<i>_prob_<sampler> per region.
+  void report(std::map<std::string, double>& extra) const override;
+  std::size_t regions() const { return regions_.size(); }
+  const HybridSampler& region(std::size_t i) const { return *regions_[i]; }
+
+ private:
+  std::vector<std::unique_ptr<HybridSampler>> regions_;
+  int m_;
+  RegionSchedule schedule_;
+  SamplerBandit region_bandit_;
+  std::size_t current_ = 0;
+  int drawn_in_round_ = 0;
+  std::size_t last_ = 0;
+  bool pending_ = false;
+  std::uint64_t total_cost_ = 0, costed_ = 0;  // running mean of the rewarded samples' CD calls
+  std::vector<std::uint64_t> rounds_;
+};
+
+// UAS, the unsupervised adaptive strategy (seed paper, Algorithm 2.1): a training roadmap (Phase
+// kTraining), regions by clustering its nodes' visibility and positions, then PRM whose samples come
+// from a Hybrid PRM per region in round robin, connected to the k nearest in the whole roadmap,
+// until the seeds are connected or the run's limits. One cluster: one region, the whole space, i.e.
+// global Hybrid PRM (extra uas_fallback_global = 1).
+class Uas final : public Planner {
+ public:
+  explicit Uas(UasSettings settings = {});
+  PlanResult plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) override;
+
+ private:
+  UasSettings settings_;
+};
+
+// Adds `uas` (parameters clustering, training_nodes, training_k, m, k, gamma, alpha, cost, bridge,
+// region_margin, reuse_training).
+void register_uas(PlannerRegistry& registry);
+
+}  // namespace amp::roadmap
