@@ -3,15 +3,18 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "amp/bench/bench_runner.hpp"
 #include "amp/bench/experiment.hpp"
 #include "amp/core/path_file.hpp"
 #include "amp/roadmap/run.hpp"
+#include "amp/roadmap/uas_regions.hpp"
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
+#include "region_output.hpp"
 #include "commands.hpp"
 
 namespace amp::cli {
@@ -32,6 +35,22 @@ struct DemoOptions {
   double time_limit = 60.0;
   int bench_runs = 20;
 };
+
+// Runs one of the bundled experiments into `out_dir` (remade: the demo's own directory), with
+// `runs` per planner (0: the file's).
+void run_demo_bench(const std::filesystem::path& file, const std::filesystem::path& out_dir, int runs) {
+  bench::Experiment e = bench::load_experiment(file);
+  if (runs > 0) e.runs = runs;
+  e.fingerprint = bench::experiment_fingerprint(e);
+  bench::BenchOptions b;
+  b.out_dir = out_dir;
+  b.force = true;
+  std::printf("\nBenchmark: %s, %zu problems x %zu planners x %d runs on all cores...\n", e.name.c_str(),
+              e.problems.size(), e.planners.size(), e.runs);
+  const bench::BenchResult r = bench::run_experiment(e, b);
+  std::printf("%zu runs in %.1f s: %s/report.html (and runs.csv, summary.json, results.db)\n", r.written,
+              r.wall_time_s, b.out_dir.string().c_str());
+}
 
 int run_demo(const DemoOptions& o) {
   const std::filesystem::path out = o.out;
@@ -81,17 +100,25 @@ int run_demo(const DemoOptions& o) {
               static_cast<int>(std::size(kDemoProblems)) - failures, std::size(kDemoProblems), out.string().c_str());
 
   // The benchmark harness on a reduced experiment: run-cost statistics, database and report.
-  bench::Experiment e = bench::load_experiment(dir / "experiments" / "quick.yaml");
-  e.runs = o.bench_runs;
-  e.fingerprint = bench::experiment_fingerprint(e);
-  bench::BenchOptions b;
-  b.out_dir = out / "bench";
-  b.force = true;  // the demo's own output directory, remade on every run
-  std::printf("\nBenchmark: %s, %zu problems x %zu planners x %d runs on all cores...\n", e.name.c_str(),
-              e.problems.size(), e.planners.size(), e.runs);
-  const bench::BenchResult r = bench::run_experiment(e, b);
-  std::printf("%zu runs in %.1f s: %s/report.html (and runs.csv, summary.json, results.db)\n", r.written,
-              r.wall_time_s, b.out_dir.string().c_str());
+  run_demo_bench(dir / "experiments" / "quick.yaml", out / "bench", o.bench_runs);
+
+  // UAS: the Maze's regions (the paper's Figure 1 and Table 1), then a reduced Table 4.
+  std::printf("\nUAS region identification on the Maze (k-means, 200 training nodes, seed %llu):\n",
+              static_cast<unsigned long long>(o.seed));
+  const world::Problem maze = world::load_problem(dir / "maze.yaml");
+  core::Counters counters;
+  const auto checker = maze.environment->make_checker(counters);
+  const roadmap::PlanningContext ctx{*maze.space, *maze.environment, *checker, maze.seeds};
+  core::Rng rng(o.seed);
+  const core::StopCondition stop(o.time_limit, std::numeric_limits<std::size_t>::max());
+  const roadmap::RegionModel model = roadmap::identify_regions(ctx, roadmap::RegionSettings{}, stop, rng);
+  if (model.training.stopped == core::StopReason::kNone) {
+    print_region_table(maze, model, counters.cd_calls());
+    std::filesystem::create_directories(out / "uas");
+    draw_regions(maze, model, (out / "uas" / "maze-regions.svg").string());
+    std::printf("picture: %s\n", (out / "uas" / "maze-regions.svg").string().c_str());
+  }
+  run_demo_bench(dir / "experiments" / "uas-quick.yaml", out / "uas", 0);
   return failures == 0 ? kExitOk : kExitNotSolved;
 }
 
