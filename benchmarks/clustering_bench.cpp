@@ -1,12 +1,13 @@
 // Region identification's clustering step (SPEC section 1, step 3) on a 400-point 3-D training set:
 // four Gaussian blobs (sd 1) of 100 points at the vertices of a tetrahedron 10 from its centre,
 // standardised as UAS standardises its features. Targets: k-means over c = 1..10 with 10 restarts and
-// Ward < 50 ms; PG-means < 500 ms. state.counters["clusters"] reports the c chosen.
+// Ward < 50 ms; PG-means < 500 ms; auto (all three and their silhouettes) reported. state.counters["clusters"] reports the c chosen.
 #include <cmath>
 
 #include <benchmark/benchmark.h>
 
 #include "amp/core/rng.hpp"
+#include "amp/learn/clusterer_choice.hpp"
 #include "amp/learn/kmeans.hpp"
 #include "amp/learn/pg_means.hpp"
 #include "amp/learn/standardize.hpp"
@@ -46,9 +47,12 @@ void run(benchmark::State& state, const amp::learn::Clusterer& method) {
 void BM_KMeans(benchmark::State& state) { run(state, amp::learn::KMeans()); }
 void BM_Ward(benchmark::State& state) { run(state, amp::learn::WardClustering()); }
 void BM_PgMeans(benchmark::State& state) { run(state, amp::learn::PgMeans()); }
+// UAS's automatic choice: the three methods plus a silhouette (O(n^2)) each.
+void BM_Auto(benchmark::State& state) { run(state, amp::learn::AutoClusterer()); }
 
 BENCHMARK(BM_KMeans)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Ward)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PgMeans)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Auto)->Unit(benchmark::kMillisecond);
 
 }  // namespace
