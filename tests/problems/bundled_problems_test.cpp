@@ -1,4 +1,4 @@
-// Every bundled problem loads, and PRM solves it within the problem's limits with a path that starts
+// Every bundled problem loads, and PRM and UAS (which must take OMPL.app .cfg problems unchanged) each solve it within the problem's limits with a path that starts
 // at the start, ends at the goal and re-checks collision-free, with a fresh checker, at the space's
 // resolution (edges are checked at discrete states, as in OMPL: a corner thinner than the resolution
 // can be clipped between two of them, so a finer re-check is not a property PRM promises); the same
@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -23,17 +24,18 @@ std::filesystem::path problem_file(const std::string& name) {
 }
 
 
-class BundledProblem : public ::testing::TestWithParam<std::string> {};
+class BundledProblem : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
-TEST_P(BundledProblem, PrmSolvesItWithAValidReproduciblePath) {
-  const world::Problem p = world::load_problem(problem_file(GetParam()));
-  const auto a = roadmap::execute_run(p, "prm", {}, 1, p.defaults.time_limit_s, p.defaults.node_limit);
+TEST_P(BundledProblem, SolvedWithAValidReproduciblePath) {
+  const auto& [file, planner] = GetParam();
+  const world::Problem p = world::load_problem(problem_file(file));
+  const auto a = roadmap::execute_run(p, planner, {}, 1, p.defaults.time_limit_s, p.defaults.node_limit);
   ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << p.name << ": " << a.record.message;
   amp::test::expect_valid_path(p, a.path);
   EXPECT_GT(a.record.cd_calls(), 0u);
   EXPECT_GT(a.record.path_length, 0.0);
 
-  const auto b = roadmap::execute_run(p, "prm", {}, 1, p.defaults.time_limit_s, p.defaults.node_limit);
+  const auto b = roadmap::execute_run(p, planner, {}, 1, p.defaults.time_limit_s, p.defaults.node_limit);
   ASSERT_EQ(b.path.size(), a.path.size());
   for (std::size_t i = 0; i < a.path.size(); ++i) EXPECT_EQ(a.path[i], b.path[i]);
   EXPECT_EQ(a.record.cd_calls(), b.record.cd_calls());
@@ -41,11 +43,14 @@ TEST_P(BundledProblem, PrmSolvesItWithAValidReproduciblePath) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Problems, BundledProblem,
-                         ::testing::Values("maze.yaml", "l-tunnel.yaml", "hook.yaml", "walls.yaml", "linkage.yaml",
-                                           "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml",
-                                           "ompl/gap_planar.cfg", "ompl/cage_window.cfg"),
+                         ::testing::Combine(::testing::Values("maze.yaml", "l-tunnel.yaml", "hook.yaml", "walls.yaml",
+                                                              "linkage.yaml", "maze3d.yaml", "walls3d.yaml",
+                                                              "office-map.yaml", "movingai-rooms.yaml",
+                                                              "ompl/gap_planar.cfg", "ompl/cage_window.cfg"),
+                                            ::testing::Values("prm", "uas")),
                          [](const auto& info) {
-                           std::string n = std::filesystem::path(info.param).stem().string();
+                           std::string n = std::filesystem::path(std::get<0>(info.param)).stem().string() + "_" +
+                                           std::get<1>(info.param);
                            for (char& c : n) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return n;
                          });
