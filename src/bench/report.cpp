@@ -128,6 +128,7 @@ void write_report(const Experiment& e, const Json& summary, const RunInfo& info,
     for (const auto& f : text::findings(pj)) out << "<li>" << f << "</li>\n";
     out << "</ul></div>\n</div>\n";
     report_page::cost_table(out, pj);
+    report_page::phase_table(out, pj);
     report_page::charts(out, e, runs.cost[p]);
     out << "</section>\n";
   }

@@ -185,6 +185,36 @@ void cost_table(std::ostream& out, const Json& problem) {
   out << "</tbody></table>\n";
 }
 
+void phase_table(std::ostream& out, const Json& problem) {
+  const Json& planners = problem.value("planners", Json::array());
+  auto median = [](const Json& pl, const char* key) {
+    const Json& phases = pl.contains("by_phase") ? pl["by_phase"] : Json::object();
+    return text::number_at(phases.contains(key) ? phases[key] : Json::object(), "median");
+  };
+  const bool any_training = std::any_of(planners.begin(), planners.end(), [&](const Json& pl) {
+    const double m = median(pl, "cd_calls_training");
+    return std::isfinite(m) && m > 0.0;
+  });
+  if (!any_training) return;  // no learner in this experiment: the cost table says it all
+  out << "<h3>Cost by phase (medians, as UAS\u2019s Table 4)</h3>\n<table class=\"stats\"><thead>"
+         "<tr class=\"group\"><th></th><th colspan=\"3\">nodes</th><th colspan=\"4\">CD calls</th></tr>"
+         "<tr><th>Planner</th><th>Training</th><th>Planning</th><th>Total</th><th>Training</th><th>Planning</th>"
+         "<th>Total</th><th>CV of total</th></tr></thead><tbody>\n";
+  for (std::size_t c = 0; c < planners.size(); ++c) {
+    const Json& pl = planners[c];
+    const Json& cost = cost_of(pl);
+    const Json& nodes = pl.contains("nodes") ? pl["nodes"] : Json::object();
+    out << "<tr><td>" << swatch(c) << "<strong>" << xml_escape(pl.value("name", std::string())) << "</strong></td><td>"
+        << text::count(median(pl, "nodes_training")) << "</td><td>" << text::count(median(pl, "nodes_planning"))
+        << "</td><td>" << text::count(text::number_at(nodes, "median")) << "</td><td>"
+        << text::count(median(pl, "cd_calls_training")) << "</td><td>" << text::count(median(pl, "cd_calls_planning"))
+        << "</td><td>" << text::count(text::number_at(cost, "median")) << "</td><td>"
+        << text::percent(std::round(text::number_at(cost, "cv_percent"))) << "</td></tr>\n";
+  }
+  out << "</tbody></table>\n<p class=\"note\">Medians are taken per column, so training + planning need not "
+         "equal the total. A reused training roadmap counts in the planning roadmap\u2019s total nodes.</p>\n";
+}
+
 void charts(std::ostream& out, const Experiment& e, const std::vector<std::vector<double>>& cost) {
   if (std::all_of(cost.begin(), cost.end(), [](const auto& g) { return g.empty(); })) {
     out << "<p class=\"note\">No runs to chart.</p>\n";

@@ -30,6 +30,9 @@ void overview(std::ostream& out, const Experiment& e, const nlohmann::json& prob
 // The paper's Table 1 for one problem (summary.json's entry), extended with the five-number
 // summary and median time, nodes and path length.
 void cost_table(std::ostream& out, const nlohmann::json& problem);
+// Nodes and CD calls split into training and planning (medians), shown only when some planner of
+// the problem spent CD calls in a training phase.
+void phase_table(std::ostream& out, const nlohmann::json& problem);
 // Box plot of every planner's run cost and one histogram per planner on shared bins and axes; a
 // log scale when the costs span more than kLogSpan.
 void charts(std::ostream& out, const Experiment& e, const std::vector<std::vector<double>>& cost);

@@ -74,6 +74,12 @@ void GroupMetrics::add(const Trial& t) {
   cd_calls.push_back(static_cast<double>(r.cd_calls()));
   time_s.push_back(r.wall_time_s);
   nodes.push_back(static_cast<double>(r.nodes));
+  cd_calls_training.push_back(static_cast<double>(r.cd_calls_training));
+  cd_calls_planning.push_back(static_cast<double>(r.cd_calls_planning + r.cd_calls_query));
+  const auto trained = r.extra.find("training_nodes");
+  const auto planned = r.extra.find("planning_nodes");
+  nodes_training.push_back(trained != r.extra.end() ? trained->second : 0.0);
+  nodes_planning.push_back(planned != r.extra.end() ? planned->second : static_cast<double>(r.nodes));
   if (r.status == core::PlanStatus::kSolved) path_length.push_back(r.path_length);
   ++statuses[std::string(core::to_string(r.status))];
 }
@@ -107,7 +113,12 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
                                 {"cd_calls", describe_json(g.cd_calls)},
                                 {"time_s", describe_json(g.time_s)},
                                 {"nodes", describe_json(g.nodes)},
-                                {"path_length", describe_json(g.path_length)}});
+                                {"path_length", describe_json(g.path_length)},
+                                {"by_phase",
+                                 {{"cd_calls_training", describe_json(g.cd_calls_training)},
+                                  {"cd_calls_planning", describe_json(g.cd_calls_planning)},
+                                  {"nodes_training", describe_json(g.nodes_training)},
+                                  {"nodes_planning", describe_json(g.nodes_planning)}}}});
     }
     if (e.planners.size() >= 2) pj["tests"] = tests_json(e, metrics[p], alpha);
     out["problems"].push_back(std::move(pj));

@@ -120,6 +120,32 @@ TEST_F(ReportTest, BenchRunWritesASelfContainedReport) {
   EXPECT_NE(html.find("Kruskal\u2013Wallis"), std::string::npos);
   EXPECT_NE(html.find("REGWQ"), std::string::npos);
   EXPECT_NE(html.find("has the lowest coefficient of variation"), std::string::npos);
+  EXPECT_EQ(html.find("Cost by phase"), std::string::npos) << "no planner trains: no phase table";
+}
+
+TEST_F(ReportTest, ALearnerGetsTheCostByPhaseTable) {
+  Experiment e = walls_experiment({"prm"});
+  e.runs = 3;
+  e.planners.push_back({"uas", "uas", {}, {}});
+  BenchOptions o;
+  o.out_dir = dir_ / "out";
+  o.threads = 2;
+  ASSERT_EQ(run_experiment(e, o).written, 6u);
+  std::ifstream in(o.out_dir / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in);
+  const auto& planners = s["problems"][0]["planners"];
+  const auto& prm = planners[0]["by_phase"];
+  const auto& uas = planners[1]["by_phase"];
+  EXPECT_EQ(prm["cd_calls_training"]["max"], 0.0);
+  EXPECT_EQ(prm["nodes_planning"]["median"], planners[0]["nodes"]["median"]);
+  EXPECT_GT(uas["cd_calls_training"]["min"].get<double>(), 0.0);
+  EXPECT_EQ(uas["nodes_training"]["median"], 200.0);
+  // Every run's phases add up to its total, so the means do too.
+  EXPECT_NEAR(uas["cd_calls_training"]["mean"].get<double>() + uas["cd_calls_planning"]["mean"].get<double>(),
+              planners[1]["cd_calls"]["mean"].get<double>(), 1e-6);
+  const std::string html = page_in(o.out_dir);
+  EXPECT_NE(html.find("Cost by phase"), std::string::npos);
+  expect_no_missing_values(html);
 }
 
 // The paper's Table 1 (Hwang-Ahuja problem) and results, given as summary.json: the page says them

@@ -17,6 +17,9 @@ struct GroupMetrics {
   std::vector<double> time_s;
   std::vector<double> nodes;
   std::vector<double> path_length;  // solved runs only
+  // The cost split by phase (UAS's Table 4): training (a learner's preparatory roadmap), and the
+  // rest (planning + query); nodes likewise, from the run's training_nodes extra when it has one.
+  std::vector<double> cd_calls_training, cd_calls_planning, nodes_training, nodes_planning;
   std::map<std::string, std::size_t> statuses;
 
   std::size_t runs() const { return cd_calls.size(); }
