@@ -27,7 +27,7 @@ struct RegionsOptions {
   std::string clustering = "kmeans";
   std::vector<int> training_nodes{200};
   int training_k = 5;
-  double margin = 0.5;
+  double margin = 0.0;
   std::uint64_t seed = 1;
   std::string output;
   bool json = false;
@@ -96,7 +96,7 @@ void add_regions_command(CLI::App& app, int& exit_code) {
                   "Training roadmap size; several sizes give one table (and picture) each [200]")
       ->check(CLI::Range(2, 100000));
   cmd->add_option("--training-k", o->training_k, "Neighbours per training node [5]")->check(CLI::Range(1, 1000));
-  cmd->add_option("--margin", o->margin, "Region box growth per side, in robot sizes [0.5]")->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--margin", o->margin, "Region box growth per side, in robot sizes [0]")->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--seed", o->seed, "Random seed (same regions as amp plan --planner uas --seed) [1]")
       ->check(unsigned_integer());
   cmd->add_option("-o,--output", o->output, "SVG file to draw the clusters and regions to");

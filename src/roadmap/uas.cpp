@@ -121,6 +121,7 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
   figures["uas_fallback_global"] = global ? 1.0 : 0.0;
   figures["clustering_method"] = method_index(model.method);  // index into kmeans, ward, pgmeans
   figures["region_seed_extensions"] = model.seed_extensions;
+  figures["regions"] = global ? 1.0 : static_cast<double>(model.regions.size()) + (settings_.whole_space_region ? 1.0 : 0.0);
   for (std::size_t i = 0; i < model.auto_methods.size(); ++i) {
     figures["silhouette_" + model.auto_methods[i]] = model.auto_scores[i];
     figures["clusters_" + model.auto_methods[i]] = model.auto_clusters[i];
@@ -143,6 +144,9 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
       for (const auto& box : boxes) {
         auto domain = std::make_shared<ReferencePointBoxDomain>(c.space, c.environment, box);
         regions.push_back(std::make_unique<HybridSampler>(make_uas_samplers(c, domain, s.bridge), c.checker, s.hybrid));
+      }
+      if (s.whole_space_region) {  // the last region: keeps every part of the space reachable
+        regions.push_back(std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge), c.checker, s.hybrid));
       }
       return std::make_unique<RegionalSampler>(std::move(regions), s.m, s.schedule, s.hybrid.gamma);
     };
@@ -181,6 +185,8 @@ void register_uas(PlannerRegistry& registry) {
           {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
           {"reuse_training", ParamType::kBool, d.reuse_training, 0, 1, {},
            "start the planning roadmap from the training roadmap"},
+          {"whole_space_region", ParamType::kBool, d.whole_space_region, 0, 1, {},
+           "the whole space takes a turn as one more region (keeps every passage reachable)"},
       }};
   registry.add(std::move(info), [](const Params& p) -> std::unique_ptr<Planner> {
     UasSettings s;
@@ -196,6 +202,7 @@ void register_uas(PlannerRegistry& registry) {
     s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
     s.bridge = p.boolean("bridge");
     s.reuse_training = p.boolean("reuse_training");
+    s.whole_space_region = p.boolean("whole_space_region");
     return std::make_unique<Uas>(std::move(s));
   });
 }

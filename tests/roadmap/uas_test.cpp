@@ -231,6 +231,16 @@ TEST(Uas, OnARegionRunEachRegionLearnsItsOwnSamplerProbabilities) {
     EXPECT_NEAR(sum, 1.0, 1e-12);
     EXPECT_GT(o.record.extra.at("region" + std::to_string(r) + "_rounds"), 0.0);
   }
+  // The whole space takes its turn after the cluster regions, with rounds as many as theirs (+-1).
+  EXPECT_EQ(o.record.extra.at("regions"), c + 1.0);
+  const std::string whole = "region" + std::to_string(c) + "_rounds";
+  EXPECT_NEAR(o.record.extra.at(whole), o.record.extra.at("region0_rounds"), 1.0);
+  const RunOutcome boxes_only = execute_run(bundled("maze"), "uas", {{"clustering", "kmeans"}, {"whole_space_region", false}},
+                                            2, kNoTimeLimit, 20000);
+  ASSERT_EQ(boxes_only.record.status, core::PlanStatus::kSolved);
+  EXPECT_EQ(boxes_only.record.extra.at("regions"), boxes_only.record.extra.at("clusters"));
+  EXPECT_FALSE(boxes_only.record.extra.contains(
+      "region" + std::to_string(static_cast<int>(boxes_only.record.extra.at("clusters"))) + "_rounds"));
 }
 
 TEST(Uas, StopsAtTheNodeLimitDuringTrainingOrPlanning) {

@@ -32,6 +32,10 @@ struct UasSettings {
   // Start the planning roadmap from the training roadmap (its nodes and checked edges), so the
   // training CD calls also buy roadmap. Off: the paper's separate training and planning roadmaps.
   bool reuse_training = true;
+  // Beyond the paper: the whole space takes its turn in the round robin as one more region. Boxes of
+  // training nodes need not cover every passage; without this, a passage outside every box is never
+  // sampled and the run cannot finish (seen on the Maze, 2 of 100 runs stuck at 50000 nodes).
+  bool whole_space_region = true;
   void validate() const;   // throws ParameterError
 };
 
