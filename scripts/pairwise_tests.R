@@ -1,6 +1,7 @@
 # Pairwise run-cost comparisons against one baseline planner, from an `amp bench` output directory:
 # per problem and planner, the ratio of median CD calls, the Wilcoxon rank-sum test (location), the
-# coefficients of variation and the Brown-Forsythe test (spread: one-way ANOVA on |x - median|).
+# coefficients of variation, the Brown-Forsythe test (spread: one-way ANOVA on |x - median|), and the
+# same test on log cost (relative spread, the CV's counterpart: scale-free).
 # Optional analysis helper (R is not a build dependency: apt-get install r-base-core).
 # Usage: Rscript scripts/pairwise_tests.R OUT_DIR [BASELINE=hybrid-prm]
 args <- commandArgs(TRUE)
@@ -13,7 +14,8 @@ brown_forsythe <- function(x, y) {
   anova(lm(z ~ g))[["Pr(>F)"]][1]
 }
 cv <- function(x) 100 * sd(x) / mean(x)
-cat(sprintf("%-10s %-22s %6s %10s %7s %7s %10s\n", "problem", "planner", "ratio", "wilcoxon", "CV", "CV base", "BF"))
+cat(sprintf("%-10s %-22s %6s %10s %7s %7s %10s %10s\n", "problem", "planner", "ratio", "wilcoxon", "CV", "CV base", "BF",
+            "BF log"))
 for (p in unique(runs$problem)) {
   b <- runs$cd_calls[runs$problem == p & runs$planner == baseline]
   if (length(b) < 2) next
@@ -21,7 +23,7 @@ for (p in unique(runs$problem)) {
     if (planner == baseline) next
     x <- runs$cd_calls[runs$problem == p & runs$planner == planner]
     w <- suppressWarnings(wilcox.test(x, b)$p.value)
-    cat(sprintf("%-10s %-22s %6.2f %10.3g %6.1f%% %6.1f%% %10.3g\n", p, planner, median(x) / median(b), w, cv(x),
-                cv(b), brown_forsythe(x, b)))
+    cat(sprintf("%-10s %-22s %6.2f %10.3g %6.1f%% %6.1f%% %10.3g %10.3g\n", p, planner, median(x) / median(b), w,
+                cv(x), cv(b), brown_forsythe(x, b), brown_forsythe(log(x), log(b))))
   }
 }

@@ -168,6 +168,35 @@ TEST(RegionalSampler, TakesMSamplesFromEachRegionInTurn) {
   EXPECT_THROW(RegionalSampler({}, 4), ParameterError);
 }
 
+TEST(RegionalSampler, WeightedScheduleServesRegionsInProportionAndInAFixedOrder) {
+  const world::Problem p = test::point_problem(true);
+  core::Counters counters;
+  const auto checker = p.environment->make_checker(counters);
+  auto regions = [&] {
+    std::vector<std::unique_ptr<HybridSampler>> out;
+    for (int i = 0; i < 2; ++i) {
+      std::vector<HybridSampler::Arm> arms;
+      arms.push_back({"constant", std::make_unique<ConstantSampler>(i)});
+      out.push_back(std::make_unique<HybridSampler>(std::move(arms), *checker));
+    }
+    return out;
+  };
+  // Weights 3 and 1, smooth weighted round robin by hand: credits (3,1) -> 0 serves, (-1,1);
+  // (2,2) -> 0 (ties: the first), (-2,2); (1,3) -> 1, (1,-1); (4,0) -> 0, (0,0): then it repeats.
+  RegionalSampler s(regions(), 2, RegionSchedule::kWeighted, 0.5, {3.0, 1.0});
+  core::Rng rng(1);
+  State q;
+  std::vector<int> drawn;
+  for (int i = 0; i < 16; ++i) {
+    ASSERT_TRUE(s.sample(rng, q));
+    drawn.push_back(static_cast<int>(q[0]));
+  }
+  const std::vector<int> round_order = {0, 0, 1, 0};
+  for (int i = 0; i < 16; ++i) EXPECT_EQ(drawn[static_cast<std::size_t>(i)], round_order[(i / 2) % 4]) << i;
+  EXPECT_THROW(RegionalSampler(regions(), 2, RegionSchedule::kWeighted, 0.5, {1.0}), ParameterError);
+  EXPECT_THROW(RegionalSampler(regions(), 2, RegionSchedule::kWeighted, 0.5, {1.0, 0.0}), ParameterError);
+}
+
 // --- The planner ------------------------------------------------------------------------------------
 
 class UasPlanner : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
@@ -231,10 +260,22 @@ TEST(Uas, OnARegionRunEachRegionLearnsItsOwnSamplerProbabilities) {
     EXPECT_NEAR(sum, 1.0, 1e-12);
     EXPECT_GT(o.record.extra.at("region" + std::to_string(r) + "_rounds"), 0.0);
   }
-  // The whole space takes its turn after the cluster regions, with rounds as many as theirs (+-1).
+  // The whole space is the last region, with the regions' mean weight; each region's rounds follow
+  // its weight (1 + its training nodes of visibility < 1/2) to within one round.
   EXPECT_EQ(o.record.extra.at("regions"), c + 1.0);
-  const std::string whole = "region" + std::to_string(c) + "_rounds";
-  EXPECT_NEAR(o.record.extra.at(whole), o.record.extra.at("region0_rounds"), 1.0);
+  double mean = 0.0;
+  for (int r = 0; r < c; ++r) mean += o.record.extra.at("region" + std::to_string(r) + "_weight") / c;
+  EXPECT_DOUBLE_EQ(o.record.extra.at("region" + std::to_string(c) + "_weight"), mean);
+  double rounds = 0.0, weights = 0.0;
+  for (int r = 0; r <= c; ++r) {
+    rounds += o.record.extra.at("region" + std::to_string(r) + "_rounds");
+    weights += o.record.extra.at("region" + std::to_string(r) + "_weight");
+  }
+  for (int r = 0; r <= c; ++r) {
+    const std::string i = std::to_string(r);
+    EXPECT_NEAR(o.record.extra.at("region" + i + "_rounds"), rounds * o.record.extra.at("region" + i + "_weight") / weights,
+                1.0);
+  }
   const RunOutcome boxes_only = execute_run(bundled("maze"), "uas", {{"clustering", "kmeans"}, {"whole_space_region", false}},
                                             2, kNoTimeLimit, 20000);
   ASSERT_EQ(boxes_only.record.status, core::PlanStatus::kSolved);
@@ -261,6 +302,7 @@ TEST(Uas, RejectsBadParameters) {
   EXPECT_THROW(r.make("uas", {{"training_nodes", 1}}), ParameterError);
   EXPECT_THROW(r.make("uas", {{"region_margin", -1}}), ParameterError);
   EXPECT_THROW(r.make("uas", {{"schedule", "random"}}), ParameterError);
+  EXPECT_NO_THROW(r.make("uas", {{"schedule", "round-robin"}}));
   EXPECT_NO_THROW(r.make("uas", {{"clustering", "auto"}, {"schedule", "adaptive"}, {"reuse_training", false}}));
 }
 

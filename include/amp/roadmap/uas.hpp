@@ -20,12 +20,18 @@ enum class RegionSchedule : std::uint8_t {
   // gamma as theirs), so that regions already covered (their samples are all cc-oversample) get
   // fewer rounds; every region keeps at least gamma / |regions| of them.
   kAdaptive = 1,
+  // Beyond the paper: a smooth weighted round robin (deterministic), region j weighted by 1 + the
+  // number of its training nodes below visibility 1/2 (the cc-expand threshold): regions where the
+  // training roadmap saw narrow space get more rounds, open regions fewer.
+  kWeighted = 2,
 };
 
 struct UasSettings {
   RegionSettings regions;  // training roadmap, clustering, region growth
   int m = 10;              // samples per region per round
-  RegionSchedule schedule = RegionSchedule::kRoundRobin;
+  // Weighted by default: with the paper's equal turns, open regions took as many samples as narrow
+  // ones and UAS was no cheaper than global Hybrid PRM on the Maze (docs/uas.md).
+  RegionSchedule schedule = RegionSchedule::kWeighted;
   int k = 20;              // neighbours tried per new node, in the whole roadmap
   HybridSettings hybrid;   // each region's Hybrid PRM
   bool bridge = false;     // the bridge test as a fifth sampler in every region
@@ -45,8 +51,10 @@ struct UasSettings {
 class RegionalSampler final : public AdaptiveSampler {
  public:
   // Throws ParameterError for no regions or m < 1.
+  // `weights` (kWeighted only): one positive weight per region.
   RegionalSampler(std::vector<std::unique_ptr<HybridSampler>> regions, int m,
-                  RegionSchedule schedule = RegionSchedule::kRoundRobin, double gamma = 0.5);
+                  RegionSchedule schedule = RegionSchedule::kRoundRobin, double gamma = 0.5,
+                  std::vector<double> weights = {});
   bool sample(core::Rng& rng, State& out) override;
   void reward_last(const Insertion& insertion) override;
   // samples_/chosen_<sampler> summed over regions; region<i>_prob_<sampler> per region.
@@ -55,6 +63,8 @@ class RegionalSampler final : public AdaptiveSampler {
   const HybridSampler& region(std::size_t i) const { return *regions_[i]; }
 
  private:
+  std::size_t next_weighted();
+
   std::vector<std::unique_ptr<HybridSampler>> regions_;
   int m_;
   RegionSchedule schedule_;
@@ -65,6 +75,7 @@ class RegionalSampler final : public AdaptiveSampler {
   bool pending_ = false;
   std::uint64_t total_cost_ = 0, costed_ = 0;  // running mean of the rewarded samples' CD calls
   std::vector<std::uint64_t> rounds_;
+  std::vector<double> weights_, credit_;  // smooth weighted round robin
 };
 
 // UAS, the unsupervised adaptive strategy (seed paper, Algorithm 2.1): a training roadmap (Phase
