@@ -30,13 +30,15 @@ void print_region_table(const world::Problem& problem, const roadmap::RegionMode
     std::printf("  auto: %-8s %2d clusters, mean silhouette %.3f%s\n", m.auto_methods[i].c_str(), m.auto_clusters[i],
                 m.auto_scores[i], m.auto_methods[i] == m.method ? "  <- chosen" : "");
   }
-  std::printf("  %-7s %8s %8s %8s %8s %8s  %s\n", "cluster", "size(%)", "vis.avg", "vis.std", "vis.min", "vis.max",
-              "region box");
+  std::printf("  %-7s %8s %8s %8s %8s %8s %7s  %s\n", "cluster", "size(%)", "vis.avg", "vis.std", "vis.min", "vis.max",
+              "weight", "region box");
   for (std::size_t j = 0; j < m.regions.size(); ++j) {
     const roadmap::ClusterStats& s = m.regions[j].stats;
-    std::printf("  %-7zu %8.1f %8.3f %8.3f %8.3f %8.3f  %s\n", j, s.size_percent, s.visibility_mean, s.visibility_std,
-                s.visibility_min, s.visibility_max, box_text(m.regions[j].box, m.training.planar).c_str());
+    std::printf("  %-7zu %8.1f %8.3f %8.3f %8.3f %8.3f %7.0f  %s\n", j, s.size_percent, s.visibility_mean,
+                s.visibility_std, s.visibility_min, s.visibility_max, roadmap::narrow_weight(m.regions[j], m.training),
+                box_text(m.regions[j].box, m.training.planar).c_str());
   }
+  std::printf("  (weight: 1 + training nodes of visibility < 0.5, the region's share of UAS's rounds)\n");
 }
 
 nlohmann::json region_json(const roadmap::RegionModel& m, std::uint64_t cd_calls) {
@@ -48,6 +50,7 @@ nlohmann::json region_json(const roadmap::RegionModel& m, std::uint64_t cd_calls
                         {"visibility_std", r.stats.visibility_std},
                         {"visibility_min", r.stats.visibility_min},
                         {"visibility_max", r.stats.visibility_max},
+                        {"weight", roadmap::narrow_weight(r, m.training)},
                         {"box_min", {r.box.min().x(), r.box.min().y(), r.box.min().z()}},
                         {"box_max", {r.box.max().x(), r.box.max().y(), r.box.max().z()}}});
   }

@@ -8,7 +8,6 @@
 #include "amp/core/error.hpp"
 #include "amp/learn/clusterer_choice.hpp"
 #include "amp/roadmap/hybrid_prm.hpp"
-#include "amp/roadmap/node_classifier.hpp"
 #include "amp/roadmap/planner_registry.hpp"
 #include "amp/roadmap/prm.hpp"
 #include "amp/roadmap/sampling_domain.hpp"
@@ -166,9 +165,7 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
     std::vector<double> weights;
     for (const Region& r : model.regions) {
       boxes.push_back(r.box);
-      double narrow = 0.0;
-      for (const std::size_t i : r.members) narrow += model.training.visibility[i] < kExpandVisibility ? 1.0 : 0.0;
-      weights.push_back(1.0 + narrow);
+      weights.push_back(narrow_weight(r, model.training));
     }
     // The whole space gets the regions' mean weight. Not less: boxes can leave gaps (PG-means split
     // the Maze into two halves with a gap between them), and with weight 1 one run needed ~100k

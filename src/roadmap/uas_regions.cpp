@@ -8,6 +8,7 @@
 #include "amp/core/error.hpp"
 #include "amp/learn/clusterer_choice.hpp"
 #include "amp/learn/standardize.hpp"
+#include "amp/roadmap/node_classifier.hpp"
 #include "amp/world/environment.hpp"
 
 namespace amp::roadmap {
@@ -104,6 +105,12 @@ std::vector<Region> make_regions(const TrainingSet& training, const std::vector<
   }
   if (seed_extensions) *seed_extensions = extensions;
   return regions;
+}
+
+double narrow_weight(const Region& region, const TrainingSet& training) {
+  double narrow = 0.0;
+  for (const std::size_t i : region.members) narrow += training.visibility[i] < kExpandVisibility ? 1.0 : 0.0;
+  return 1.0 + narrow;
 }
 
 double region_robot_size(const world::Environment& environment) {

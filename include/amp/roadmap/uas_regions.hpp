@@ -60,6 +60,10 @@ std::vector<Region> make_regions(const TrainingSet& training, const std::vector<
                                  const Eigen::AlignedBox3d& bounds, double robot_size, double margin,
                                  const std::vector<Eigen::Vector3d>& seed_positions, int* seed_extensions = nullptr);
 
+// A region's weight in UAS's weighted schedule: 1 + its training nodes of visibility below 1/2 (the
+// cc-expand threshold), i.e. how much narrow space the training roadmap saw in it.
+double narrow_weight(const Region& region, const TrainingSet& training);
+
 // The robot's size for regions: its bounding diameter (2 x robot_radius), or 1% of the workspace
 // extent for a point robot.
 double region_robot_size(const world::Environment& environment);
