@@ -9,7 +9,6 @@
 
 #include "amp/core/counters.hpp"
 #include "amp/core/error.hpp"
-#include "amp/learn/clusterer_choice.hpp"
 #include "amp/roadmap/planner.hpp"
 #include "amp/roadmap/uas_regions.hpp"
 #include "amp/viz/scene_renderer.hpp"
@@ -42,7 +41,6 @@ std::filesystem::path picture_file(const RegionsOptions& o, int nodes) {
 }
 
 int run_regions(const RegionsOptions& o) {
-  learn::make_clusterer(o.clustering);  // an unknown name fails before any work
   if (!o.output.empty()) {
     for (const int n : o.training_nodes) check_writable(picture_file(o, n), o.force, "-o");
   }

@@ -58,7 +58,6 @@ bool HybridSampler::sample(core::Rng& rng, State& out) {
   ++samples_[s];
   last_arm_ = s;
   sampling_cd_calls_ = checker_->counters().cd_calls() - before;
-  if (settings_.cost == SampleCost::kSampling) last_cost_ = normalised_cost(sampling_cd_calls_);
   cd_at_sample_ = before;
   pending_ = true;
   return true;
@@ -79,17 +78,16 @@ void HybridSampler::reward_last(const Insertion& insertion) {
   if (!pending_) return;  // nothing sampled since the last reward (e.g. a seed)
   last_cd_calls_ = settings_.cost == SampleCost::kNode ? checker_->counters().cd_calls() - cd_at_sample_
                                                       : sampling_cd_calls_;
-  const double cost = settings_.cost == SampleCost::kNode ? normalised_cost(last_cd_calls_) : last_cost_;
   last_reward_ = reward(insertion);
-  bandit_.update(last_arm_, last_reward_, cost);
+  bandit_.update(last_arm_, last_reward_, normalised_cost(last_cd_calls_));
   pending_ = false;
 }
 
-void HybridSampler::report_with_prefix(std::map<std::string, double>& extra, const std::string& prefix) const {
+void HybridSampler::report(std::map<std::string, double>& extra) const {
   for (std::size_t s = 0; s < arms_.size(); ++s) {
-    extra[prefix + "prob_" + arms_[s].name] = bandit_.probabilities()[s];
-    extra[prefix + "samples_" + arms_[s].name] = static_cast<double>(samples_[s]);
-    extra[prefix + "chosen_" + arms_[s].name] = static_cast<double>(chosen_[s]);
+    extra["prob_" + arms_[s].name] = bandit_.probabilities()[s];
+    extra["samples_" + arms_[s].name] = static_cast<double>(samples_[s]);
+    extra["chosen_" + arms_[s].name] = static_cast<double>(chosen_[s]);
   }
 }
 

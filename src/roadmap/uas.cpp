@@ -119,7 +119,7 @@ void RegionalSampler::report(std::map<std::string, double>& extra) const {
 Uas::Uas(UasSettings settings) : settings_(std::move(settings)) { settings_.validate(); }
 
 PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
-  check_seeds(ctx);
+  check_seeds(ctx);  // before training spends anything (Prm::plan checks them again: 2 CD calls)
   core::Counters& counters = ctx.checker.counters();
   counters.set_phase(core::Phase::kTraining);
   RegionModel model = identify_regions(ctx, settings_.regions, stop, rng);

@@ -75,9 +75,8 @@ class HybridSampler final : public AdaptiveSampler {
   std::uint64_t chosen(std::size_t s) const { return chosen_[s]; }    // times arm s was chosen
   // Normalised cost of a sample that spent `cd_calls` (updates the running mean).
   double normalised_cost(std::uint64_t cd_calls);
-  // prob_<name>, samples_<name>, chosen_<name> for every arm, keys prefixed by `prefix`.
-  void report_with_prefix(std::map<std::string, double>& extra, const std::string& prefix) const;
-  void report(std::map<std::string, double>& extra) const override { report_with_prefix(extra, ""); }
+  // prob_<name>, samples_<name>, chosen_<name> for every arm.
+  void report(std::map<std::string, double>& extra) const override;
 
  private:
   std::vector<Arm> arms_;
@@ -87,12 +86,11 @@ class HybridSampler final : public AdaptiveSampler {
   std::vector<std::uint64_t> samples_, chosen_;
   std::uint64_t total_cost_ = 0, total_samples_ = 0;
   std::size_t last_arm_ = 0;
-  double last_cost_ = 1.0;         // kSampling: the normalised cost of the pending sample
-  std::uint64_t cd_at_sample_ = 0;  // kNode: the CD count when the pending sample was drawn
-  bool pending_ = false;  // a successful sample awaits its reward
+  bool pending_ = false;                  // a successful sample awaits its reward
+  std::uint64_t cd_at_sample_ = 0;       // the CD count when the pending sample was drawn
+  std::uint64_t sampling_cd_calls_ = 0;  // the pending sample's own CD calls
   double last_reward_ = 0.0;
   std::uint64_t last_cd_calls_ = 0;
-  std::uint64_t sampling_cd_calls_ = 0;  // of the pending sample
 };
 
 // Feeds every sampled insertion's reward to an AdaptiveSampler and counts node classes; reports both.
