@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "amp/core/error.hpp"
+#include "amp/roadmap/competence_prm.hpp"
 #include "amp/roadmap/hybrid_prm.hpp"
 #include "amp/roadmap/uas.hpp"
 #include "amp/roadmap/sampler_prms.hpp"
@@ -47,6 +48,7 @@ const PlannerRegistry& builtin_planners() {
     register_sampler_prms(r);
     register_hybrid_prm(r);
     register_uas(r);
+    register_competence_prms(r);
     return r;
   }();
   return registry;

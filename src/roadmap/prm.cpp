@@ -74,6 +74,7 @@ class PrmRun {
     if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_);
     if (settings_.smooth) result.extra["shortcuts"] = static_cast<double>(shortcuts_);
     if (observer_) observer_->report(result.extra);
+    local_planner_->report(result.extra);
     result.roadmap = roadmap_;
     return result;
   }
@@ -92,7 +93,8 @@ class PrmRun {
       const bool joins = observer_ && !roadmap_->same_component(v, n.index);
       if (settings_.lazy) {
         roadmap_->add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
-      } else if (local_planner_->connect(q, roadmap_->state(n.index))) {
+      } else if (local_planner_->connect_edge(q, roadmap_->state(n.index),
+                                              EdgeRequest{v, n.index, roadmap_->vertex_count()})) {
         roadmap_->add_edge(v, n.index, n.distance);
       } else {
         continue;
@@ -147,8 +149,30 @@ class PrmRun {
       if (stop_.should_stop(roadmap_->vertex_count())) return false;  // the main loop reports why
     }
     path.clear();
-    for (const VertexId v : ids) path.push_back(roadmap_->state(v));
+    std::size_t next_seed = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (i > 0) append_waypoints(ids[i - 1], ids[i], path);
+      // segment_starts_ now counts in path states, waypoints included.
+      if (next_seed < segment_starts_.size() && segment_starts_[next_seed] == i) segment_starts_[next_seed++] = path.size();
+      path.push_back(roadmap_->state(ids[i]));
+    }
     return true;
+  }
+
+  // The local planner's states between a and b (none for straight edges). Each edge was made by
+  // connect(newer vertex, older vertex), so it is asked in that direction; the search is query work.
+  void append_waypoints(VertexId a, VertexId b, std::vector<State>& path) {
+    core::Counters& counters = ctx_.checker.counters();
+    const core::Phase phase = counters.phase();
+    counters.set_phase(core::Phase::kQuery);
+    const VertexId newer = std::max(a, b), older = std::min(a, b);
+    local_planner_->edge_waypoints(roadmap_->state(newer), roadmap_->state(older), waypoints_);
+    if (newer == a) {
+      path.insert(path.end(), waypoints_.begin(), waypoints_.end());
+    } else {
+      path.insert(path.end(), waypoints_.rbegin(), waypoints_.rend());
+    }
+    counters.set_phase(phase);
   }
 
   bool edge_checked(VertexId a, VertexId b) const {
@@ -187,6 +211,7 @@ class PrmRun {
   std::vector<Neighbor> neighbors_;
   std::vector<VertexId> seed_ids_;
   std::vector<VertexId> leg_;
+  std::vector<State> waypoints_;
   std::vector<std::size_t> segment_starts_;
   std::uint64_t failed_samples_ = 0;
   std::uint64_t removed_edges_ = 0;

@@ -1,0 +1,239 @@
+#include "amp/roadmap/grid_astar_planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "amp/core/error.hpp"
+
+namespace amp::roadmap {
+
+namespace {
+
+// Offsets beyond this many cells from a are treated as blocked (cells are stored as int16).
+constexpr int kMaxOffset = 32000;
+constexpr int kMaxSteps = 16000;
+
+bool later(std::uint64_t a, std::uint64_t b) { return a > b; }
+
+}  // namespace
+
+void GridAStarSettings::validate() const {
+  if (steps < 1 || steps > kMaxSteps) {
+    throw ParameterError("grid: steps per degree of freedom must be in [1, " + std::to_string(kMaxSteps) + "], got " +
+                         std::to_string(steps));
+  }
+  if (g_weight < 0 || h_weight < 1 || g_weight > 1000 || h_weight > 1000) {
+    throw ParameterError("grid: need 0 <= A <= 1000 and 1 <= B <= 1000 in f = A g + B h");
+  }
+  if (max_cells < 1) throw ParameterError("grid: max_cells must be >= 1");
+}
+
+GridAStarPlanner::GridAStarPlanner(const core::Space& space, const world::ValidityChecker& checker,
+                                   GridAStarSettings settings)
+    : space_(&space), checker_(&checker), settings_(settings), chart_(space, settings.steps), dims_(chart_.dimension()) {
+  settings_.validate();
+  if (dims_ > kMaxDims) {
+    throw ParameterError("grid: at most " + std::to_string(kMaxDims) + " degrees of freedom, got " + std::to_string(dims_));
+  }
+  table_.resize(1024);
+}
+
+void GridAStarPlanner::set_threshold(double o_th) {
+  if (!(o_th > 0.0)) throw ParameterError("grid: the competence threshold O_th must be > 0");
+  threshold_ = o_th;
+}
+
+bool GridAStarPlanner::connect(const State& a, const State& b) {
+  const bool ok = search(a, b, threshold_, nullptr);
+  checker_->counters().add_local_plan(ok);
+  return ok;
+}
+
+void GridAStarPlanner::edge_waypoints(const State& a, const State& b, std::vector<State>& out) {
+  out.clear();
+  if (!search(a, b, std::numeric_limits<double>::infinity(), &out)) {
+    throw Error("grid A*: an accepted edge could not be searched again");
+  }
+}
+
+std::uint64_t GridAStarPlanner::hash(const Cell& c) const {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+  for (int i = 0; i < dims_; ++i) {
+    h ^= static_cast<std::uint16_t>(c[static_cast<std::size_t>(i)]);
+    h *= 0xff51afd7ed558ccdULL;
+    h ^= h >> 29;
+  }
+  return h;
+}
+
+std::int32_t GridAStarPlanner::find(const Cell& c) const {
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t i = hash(c) & mask;; i = (i + 1) & mask) {
+    const Slot& s = table_[i];
+    if (s.generation != generation_) return -1;
+    if (nodes_[static_cast<std::size_t>(s.node)].cell == c) return s.node;
+  }
+}
+
+std::int32_t GridAStarPlanner::insert(const Node& n) {
+  if (2 * (used_ + 1) > table_.size()) grow_table();
+  const auto id = static_cast<std::int32_t>(nodes_.size());
+  nodes_.push_back(n);
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = hash(n.cell) & mask;
+  while (table_[i].generation == generation_) i = (i + 1) & mask;
+  table_[i] = Slot{id, generation_};
+  ++used_;
+  return id;
+}
+
+void GridAStarPlanner::grow_table() {
+  // Rehash this call's nodes into a table twice the size (amortised, like vector growth).
+  table_.assign(table_.size() * 2, Slot{});
+  generation_ = 1;
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t id = 0; id < nodes_.size(); ++id) {
+    std::size_t i = hash(nodes_[id].cell) & mask;
+    while (table_[i].generation == generation_) i = (i + 1) & mask;
+    table_[i] = Slot{static_cast<std::int32_t>(id), generation_};
+  }
+}
+
+bool GridAStarPlanner::cell_state(const Cell& c, State& out) {
+  for (int i = 0; i < dims_; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    if (std::abs(c[u]) > kMaxOffset) return false;
+    x_[u] = c[u] * chart_.step(i);
+  }
+  return chart_.state_at(x_.data(), out);
+}
+
+int GridAStarPlanner::manhattan(const Cell& c, const Cell& target) const {
+  int h = 0;
+  for (int i = 0; i < dims_; ++i) h += std::abs(c[static_cast<std::size_t>(i)] - target[static_cast<std::size_t>(i)]);
+  return h;
+}
+
+void GridAStarPlanner::push(int side, std::int32_t node, int h) {
+  const Node& n = nodes_[static_cast<std::size_t>(node)];
+  const Node& parent = nodes_[static_cast<std::size_t>(n.parent)];
+  const std::uint64_t f = static_cast<std::uint64_t>(settings_.g_weight) * static_cast<std::uint64_t>(n.g) +
+                          static_cast<std::uint64_t>(settings_.h_weight) * static_cast<std::uint64_t>(h);
+  const std::uint64_t tie = n.move == parent.move ? 0 : 1;  // prefer repeating the last joint move
+  const std::uint64_t newest = 0xffffffffULL - (sequence_++ & 0xffffffffULL);
+  auto& heap = open_[static_cast<std::size_t>(side)];
+  heap.push_back(QueueEntry{(f << 33) | (tie << 32) | newest, node});
+  std::push_heap(heap.begin(), heap.end(), [](const QueueEntry& x, const QueueEntry& y) { return later(x.key, y.key); });
+}
+
+bool GridAStarPlanner::search(const State& a, const State& b, double o_th, std::vector<State>* path) {
+  last_ = GridSearchStats{};
+  nodes_.clear();
+  used_ = 0;
+  if (++generation_ == 0) {  // wrapped: clear the stamps once every 2^32 calls
+    table_.assign(table_.size(), Slot{});
+    generation_ = 1;
+  }
+  sequence_ = 0;
+  open_[0].clear();
+  open_[1].clear();
+
+  chart_.set_origin(a);
+  chart_.coordinates(b, x_.data());
+  Cell origin{};
+  Cell target{};
+  for (int i = 0; i < dims_; ++i) {
+    const double t = std::round(x_[static_cast<std::size_t>(i)] / chart_.step(i));
+    if (std::abs(t) > kMaxOffset) return false;
+    target[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(t);
+  }
+  if (target == origin) {  // b lies within half a cell of a
+    last_.path_cells = 1;
+    return true;
+  }
+  // b's root: the cell nearest b, which must itself be free (b is within half a step of it).
+  if (!cell_state(target, scratch_)) return false;
+  ++last_.cells_checked;
+  if (!checker_->is_valid(scratch_)) return false;
+
+  insert(Node{origin, 0, 0, 0, -1});
+  insert(Node{target, 1, 0, 1, -1});
+  nodes_[0].parent = 0;
+  const auto less_urgent = [](const QueueEntry& x, const QueueEntry& y) { return later(x.key, y.key); };
+  open_[0].push_back(QueueEntry{0, 0});
+  open_[1].push_back(QueueEntry{0, 1});
+  std::array<std::int32_t, 2> last_depth{0, 0};
+  const std::array<const Cell*, 2> goal_of{&target, &origin};
+
+  for (int side = 0;; side = 1 - side) {
+    auto& heap = open_[static_cast<std::size_t>(side)];
+    if (heap.empty()) return false;  // this front is enclosed: no grid path
+    std::pop_heap(heap.begin(), heap.end(), less_urgent);
+    const std::int32_t current = heap.back().node;
+    heap.pop_back();
+    const Node c = nodes_[static_cast<std::size_t>(current)];  // a copy: insert() may reallocate
+    if (c.g > 0) {
+      ++last_.expanded;
+      const double o = static_cast<double>(last_.expanded) / static_cast<double>(c.g + last_depth[static_cast<std::size_t>(1 - side)]);
+      last_.competence = std::max(last_.competence, o);
+      if (o > o_th) {
+        last_.abandoned = true;
+        return false;
+      }
+    }
+    last_depth[static_cast<std::size_t>(side)] = c.g;
+    for (int axis = 0; axis < dims_; ++axis) {
+      for (int dir = 0; dir < 2; ++dir) {
+        Cell n = c.cell;
+        n[static_cast<std::size_t>(axis)] = static_cast<std::int16_t>(n[static_cast<std::size_t>(axis)] + (dir ? 1 : -1));
+        const std::int32_t seen = find(n);
+        if (seen >= 0) {
+          const Node& other = nodes_[static_cast<std::size_t>(seen)];
+          if (other.side == 1 - side) {  // the fronts meet
+            if (path != nullptr) {
+              trace(side == 0 ? current : seen, side == 0 ? seen : current, *path);
+              // The root cell of b is its own state only when b lies on the grid.
+              if (!path->empty() && space_->distance(path->back(), b) == 0.0) path->pop_back();
+            }
+            last_.path_cells = static_cast<std::size_t>(c.g + other.g + 2);
+            return true;
+          }
+          continue;  // blocked, or already reached by this front
+        }
+        const auto move = static_cast<std::int8_t>(2 * axis + dir);
+        if (!cell_state(n, scratch_)) {  // outside the bounds: blocked, and not a CD call
+          insert(Node{n, current, c.g + 1, kBlocked, move});
+          continue;
+        }
+        if (last_.cells_checked >= settings_.max_cells) {
+          last_.abandoned = true;
+          return false;
+        }
+        ++last_.cells_checked;
+        const bool free = checker_->is_valid(scratch_);
+        const std::int32_t id = insert(Node{n, current, c.g + 1, free ? static_cast<std::int8_t>(side) : kBlocked, move});
+        if (free) push(side, id, manhattan(n, *goal_of[static_cast<std::size_t>(side)]));
+      }
+    }
+  }
+}
+
+void GridAStarPlanner::trace(std::int32_t from_forward, std::int32_t from_backward, std::vector<State>& path) {
+  chain_.clear();
+  for (std::int32_t v = from_forward; v != 0; v = nodes_[static_cast<std::size_t>(v)].parent) chain_.push_back(v);
+  std::reverse(chain_.begin(), chain_.end());
+  for (std::int32_t v = from_backward;; v = nodes_[static_cast<std::size_t>(v)].parent) {
+    chain_.push_back(v);
+    if (v == 1) break;
+  }
+  path.clear();
+  for (const std::int32_t v : chain_) {
+    State s;
+    cell_state(nodes_[static_cast<std::size_t>(v)].cell, s);
+    path.push_back(s);
+  }
+}
+
+}  // namespace amp::roadmap
