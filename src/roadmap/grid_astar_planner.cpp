@@ -153,6 +153,12 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th, std::
     last_.path_cells = 1;
     return true;
   }
+  // O(C) >= 1 for every expanded cell (its g ancestors and the other front's g' cells were
+  // expanded first), so below 1 only b's cell next to a's can be reached: skip a doomed search.
+  if (o_th < 1.0 && manhattan(target, origin) > 1) {
+    last_.abandoned = true;
+    return false;
+  }
   // b's root: the cell nearest b, which must itself be free (b is within half a step of it).
   if (!cell_state(target, scratch_)) return false;
   ++last_.cells_checked;
