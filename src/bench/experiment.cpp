@@ -7,6 +7,7 @@
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "amp/world/yaml_fields.hpp"
 
@@ -68,11 +69,20 @@ PlannerConfig parse_planner(const world::YamlFields& f) {
   return c;
 }
 
-// Builds the planner once per drawn value so a bad name, type or range fails before any run.
-void check_planner(const PlannerConfig& c, const world::YamlFields& where) {
+// Builds the planner once per drawn value, and once with each problem's parameter defaults, so a
+// bad name, type or range fails before any run.
+void check_planner(const PlannerConfig& c, const std::vector<ExperimentProblem>& problems,
+                   const world::YamlFields& where) {
   const auto& registry = roadmap::builtin_planners();
   try {
     registry.make(c.planner, c.params);
+    for (const ExperimentProblem& p : problems) {
+      try {
+        registry.make(c.planner, roadmap::with_problem_params(*p.problem, registry.info(c.planner), c.params));
+      } catch (const Error& e) {
+        throw ParameterError("with problem '" + p.label + "' (its defaults.params): " + e.what());
+      }
+    }
     for (const auto& [name, values] : c.draws) {
       for (const auto& v : values) {
         roadmap::ParamMap p = c.params;
@@ -182,7 +192,7 @@ Experiment load_experiment(const std::filesystem::path& file) {
   for (std::size_t i = 0; i < planners.size(); ++i) {
     const world::YamlFields f = planners.element(i);
     PlannerConfig c = parse_planner(f);
-    check_planner(c, f);
+    check_planner(c, e.problems, f);
     if (!labels.insert(c.label).second) f.fail("", "planner name '" + c.label + "' appears twice; give each a name");
     e.planners.push_back(std::move(c));
   }

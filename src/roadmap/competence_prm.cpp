@@ -75,17 +75,13 @@ const char* competence_parameter(CompetenceKind kind) {
 void CompetencePrmSettings::validate() const {
   if (k < 1 || k > kMaxK) throw ParameterError("competence prm: k must be in [1, 1000], got " + std::to_string(k));
   grid.validate();
-  if (!meta) make_policy(kind, value);  // throws for a value outside its range
+  make_policy(kind, value);  // throws for a value outside its range
 }
 
 CompetencePrm::CompetencePrm(CompetencePrmSettings settings) : settings_(settings) { settings_.validate(); }
 
 PlanResult CompetencePrm::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
-  double value = settings_.value;
-  if (settings_.meta) {
-    const std::vector<double>& set = metaplanner_values(settings_.kind);
-    value = set[rng.uniform_index(set.size())];
-  }
+  const double value = settings_.value;
   PrmSettings prm;
   prm.k = settings_.k;
   prm.skip_same_component = true;  // k bounds the attempts per component; one edge joins it
@@ -120,38 +116,27 @@ void register_competence_prms(PlannerRegistry& registry) {
        "scale of O_th over a vertex's failure ratio"},
   };
   for (const Form& f : forms) {
-    for (const bool meta : {false, true}) {
-      std::vector<ParamSpec> specs = {
-          {"k", ParamType::kInteger, 10, 1, kMaxK, {}, "nearest vertices tried per connected component"},
-          {"steps", ParamType::kInteger, g.steps, 1, 16000, {}, "A* grid steps per degree of freedom"},
-          {"a", ParamType::kInteger, g.g_weight, 0, 1000, {}, "A in f = A g + B h"},
-          {"b", ParamType::kInteger, g.h_weight, 1, 1000, {}, "B in f = A g + B h"},
-          {"max_cells", ParamType::kInteger, static_cast<double>(g.max_cells), 1, 1e9, {},
-           "cells checked per A* call before it gives up regardless of O_th"},
-      };
-      std::string name = f.name;
-      std::string what = std::string("PRM with a bidirectional A* grid local planner (Isto et al.), ") + f.what;
-      if (meta) {
-        name += "-meta";
-        what += ", ";
-        what += competence_parameter(f.kind);
-        what += " drawn per run from the metaplanner's set";
-      } else {
-        specs.push_back({competence_parameter(f.kind), ParamType::kReal, f.fallback, f.lo, f.hi, {}, f.help});
-      }
-      registry.add(PlannerInfo{name, what, specs}, [f, meta](const Params& p) -> std::unique_ptr<Planner> {
-        CompetencePrmSettings s;
-        s.kind = f.kind;
-        s.meta = meta;
-        if (!meta) s.value = p.real(competence_parameter(f.kind));
-        s.k = static_cast<int>(p.integer("k"));
-        s.grid.steps = static_cast<int>(p.integer("steps"));
-        s.grid.g_weight = static_cast<int>(p.integer("a"));
-        s.grid.h_weight = static_cast<int>(p.integer("b"));
-        s.grid.max_cells = static_cast<std::size_t>(p.integer("max_cells"));
-        return std::make_unique<CompetencePrm>(s);
-      });
-    }
+    const std::vector<ParamSpec> specs = {
+        {competence_parameter(f.kind), ParamType::kReal, f.fallback, f.lo, f.hi, {}, f.help},
+        {"k", ParamType::kInteger, 10, 1, kMaxK, {}, "nearest vertices tried per connected component"},
+        {"steps", ParamType::kInteger, g.steps, 1, 16000, {}, "A* grid steps per degree of freedom"},
+        {"a", ParamType::kInteger, g.g_weight, 0, 1000, {}, "A in f = A g + B h"},
+        {"b", ParamType::kInteger, g.h_weight, 1, 1000, {}, "B in f = A g + B h"},
+        {"max_cells", ParamType::kInteger, static_cast<double>(g.max_cells), 1, 1e9, {},
+         "cells checked per A* call before it gives up regardless of O_th"},
+    };
+    const std::string what = std::string("PRM with a bidirectional A* grid local planner (Isto 2003), ") + f.what;
+    registry.add(PlannerInfo{f.name, what, specs}, [f](const Params& p) -> std::unique_ptr<Planner> {
+      CompetencePrmSettings s;
+      s.kind = f.kind;
+      s.value = p.real(competence_parameter(f.kind));
+      s.k = static_cast<int>(p.integer("k"));
+      s.grid.steps = static_cast<int>(p.integer("steps"));
+      s.grid.g_weight = static_cast<int>(p.integer("a"));
+      s.grid.h_weight = static_cast<int>(p.integer("b"));
+      s.grid.max_cells = static_cast<std::size_t>(p.integer("max_cells"));
+      return std::make_unique<CompetencePrm>(s);
+    });
   }
 }
 

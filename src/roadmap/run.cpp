@@ -26,6 +26,15 @@ double path_clearance(const core::Space& space, const world::ValidityChecker& ch
   return best;
 }
 
+ParamMap with_problem_params(const world::Problem& problem, const PlannerInfo& planner, ParamMap params) {
+  for (const auto& [name, value] : problem.defaults.params) {
+    const bool declared = std::any_of(planner.params.begin(), planner.params.end(),
+                                      [&name](const ParamSpec& s) { return s.name == name; });
+    if (declared) params.emplace(name, value);  // emplace keeps a value the run set
+  }
+  return params;
+}
+
 RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const ParamMap& params,
                        std::uint64_t seed, double time_limit_s, std::size_t node_limit,
                        const PlannerRegistry& registry, const std::atomic<bool>* cancel) {
@@ -33,7 +42,7 @@ RunOutcome execute_run(const world::Problem& problem, const std::string& planner
     throw Error("problem '" + problem.name + "': no space or environment");
   }
   // Made before anything is timed: a bad planner name or parameter throws ParameterError here.
-  std::unique_ptr<Planner> p = registry.make(planner, params);
+  std::unique_ptr<Planner> p = registry.make(planner, with_problem_params(problem, registry.info(planner), params));
 
   RunOutcome out;
   core::RunRecord& r = out.record;

@@ -72,12 +72,16 @@ Problem load_yaml_problem(const std::filesystem::path& file) {
   }
   if (root.has("defaults")) {
     const YamlFields d = root.child("defaults");
-    d.allow_only({"planner", "time_limit", "node_limit"});
+    d.allow_only({"planner", "time_limit", "node_limit", "params"});
     p.defaults.planner = d.string("planner", p.defaults.planner);
     p.defaults.time_limit_s = d.positive("time_limit", p.defaults.time_limit_s);
     const long long nl = d.integer("node_limit", static_cast<long long>(p.defaults.node_limit));
     if (nl <= 0) d.fail("node_limit", "expected a positive integer, got " + std::to_string(nl));
     p.defaults.node_limit = static_cast<std::size_t>(nl);
+    if (d.has("params")) {
+      const YamlFields params = d.child("params");
+      for (const std::string& key : params.keys()) p.defaults.params[key] = params.string(key);
+    }
   }
   return p;
 }

@@ -1,5 +1,6 @@
 #include "amp/world/yaml_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -170,6 +171,19 @@ std::filesystem::path YamlFields::file_path(std::string_view key) const {
   const std::filesystem::path full = rel.is_absolute() ? rel : file_.parent_path() / rel;
   if (!std::filesystem::is_regular_file(full)) fail(key, "no such file '" + full.string() + "'");
   return full;
+}
+
+std::vector<std::string> YamlFields::keys() const {
+  if (!node_.IsMap()) fail("", "expected a mapping, got " + scalar_text(node_));
+  std::vector<std::string> out;
+  for (const auto& kv : node_) {
+    std::string key = kv.first.Scalar();
+    if (std::find(out.begin(), out.end(), key) != out.end()) {
+      fail(key, "duplicate field (again at line " + std::to_string(kv.first.Mark().line + 1) + ")");
+    }
+    out.push_back(std::move(key));
+  }
+  return out;
 }
 
 void YamlFields::allow_only(std::initializer_list<std::string_view> allowed) const {

@@ -81,31 +81,27 @@ Outcome run(const world::Problem& p, CompetencePrmSettings s, std::uint64_t seed
   return o;
 }
 
-CompetencePrmSettings settings(CompetenceKind kind, double value, bool meta = false) {
+CompetencePrmSettings settings(CompetenceKind kind, double value) {
   CompetencePrmSettings s;
   s.kind = kind;
   s.value = value;
-  s.meta = meta;
   return s;
 }
 
 TEST(CompetencePrm, EveryFormSolvesTheGapWithAValidGridPath) {
   const world::Problem p = test::point_problem(true);
-  for (const auto& s : {settings(CompetenceKind::kStatic, 4), settings(CompetenceKind::kGlobal, 300),
-                        settings(CompetenceKind::kLocal, 0.1), settings(CompetenceKind::kStatic, 0, true),
-                        settings(CompetenceKind::kGlobal, 0, true), settings(CompetenceKind::kLocal, 0, true)}) {
+  // Every value of the metaplanner's sets.
+  std::vector<CompetencePrmSettings> all;
+  for (const auto kind : {CompetenceKind::kStatic, CompetenceKind::kGlobal, CompetenceKind::kLocal}) {
+    for (const double v : metaplanner_values(kind)) all.push_back(settings(kind, v));
+  }
+  for (const auto& s : all) {
     for (std::uint64_t seed : {1u, 2u}) {
       const Outcome o = run(p, s, seed);
       ASSERT_EQ(o.result.status, core::PlanStatus::kSolved) << competence_parameter(s.kind) << " seed " << seed;
       amp::test::expect_valid_path(p, o.result.path, 2);
       EXPECT_EQ(o.result.components >= 1, true);
-      const double value = o.result.extra.at(competence_parameter(s.kind));
-      if (s.meta) {
-        const auto& set = metaplanner_values(s.kind);
-        EXPECT_NE(std::find(set.begin(), set.end(), value), set.end());
-      } else {
-        EXPECT_EQ(value, s.value);
-      }
+      EXPECT_EQ(o.result.extra.at(competence_parameter(s.kind)), s.value);
       EXPECT_GT(o.result.extra.at("astar_calls"), 0.0);
     }
   }
@@ -114,7 +110,7 @@ TEST(CompetencePrm, EveryFormSolvesTheGapWithAValidGridPath) {
 TEST(CompetencePrm, SameSeedSameRun) {
   const world::Problem p = test::arm_problem();
   for (const auto kind : {CompetenceKind::kStatic, CompetenceKind::kGlobal, CompetenceKind::kLocal}) {
-    const auto s = settings(kind, 0, true);
+    const auto s = settings(kind, metaplanner_values(kind)[1]);
     const Outcome a = run(p, s, 11), b = run(p, s, 11);
     ASSERT_EQ(a.result.status, core::PlanStatus::kSolved);
     amp::test::expect_valid_path(p, a.result.path, 2);
@@ -153,8 +149,8 @@ TEST(CompetencePrm, BadParametersAreRejected) {
   EXPECT_THROW(reg.make("prm-g", {{"s", 0}}), ParameterError);
   EXPECT_THROW(reg.make("prm-l", {{"n", -1}}), ParameterError);
   EXPECT_THROW(reg.make("prm-l", {{"steps", 0}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-c-meta", {{"o", 4}}), ParameterError);  // the metaplanner draws o
-  for (const char* name : {"prm-c", "prm-g", "prm-l", "prm-c-meta", "prm-g-meta", "prm-l-meta"}) {
+  EXPECT_THROW(reg.make("prm-c", {{"n", 4}}), ParameterError);  // PRM-C has o, not n
+  for (const char* name : {"prm-c", "prm-g", "prm-l"}) {
     EXPECT_NE(reg.make(name, {}), nullptr) << name;
   }
 }

@@ -69,6 +69,22 @@ TEST(ExecuteRun, UserErrorsAreRethrown) {
   EXPECT_THROW(execute_run(p, "prm", {}, 1, kTimeLimit, 100), InvalidSeedError);
 }
 
+TEST(ExecuteRun, ProblemParametersApplyToPlannersThatDeclareThem) {
+  world::Problem p = test::point_problem(true);
+  p.defaults.params = {{"steps", "64"}, {"k", "3"}};
+  const PlannerRegistry& reg = builtin_planners();
+  // prm declares k but not steps; prm-l declares both; a run's own value wins.
+  const ParamMap prm = with_problem_params(p, reg.info("prm"), {});
+  EXPECT_EQ(prm, (ParamMap{{"k", "3"}}));
+  const ParamMap l = with_problem_params(p, reg.info("prm-l"), {{"k", 5}});
+  EXPECT_EQ(l, (ParamMap{{"k", 5}, {"steps", "64"}}));
+  const RunOutcome o = execute_run(p, "prm-l", {}, 3, kTimeLimit, 3000);
+  EXPECT_EQ(o.record.status, core::PlanStatus::kSolved);
+  p.defaults.params = {{"steps", "0"}};  // a grid of zero steps: the user's error, said so
+  EXPECT_THROW(execute_run(p, "prm-l", {}, 3, kTimeLimit, 3000), ParameterError);
+  EXPECT_NO_THROW(execute_run(p, "prm", {}, 3, kTimeLimit, 3000));  // prm has no grid
+}
+
 class ThrowingPlanner final : public Planner {
  public:
   PlanResult plan(const PlanningContext&, const core::StopCondition&, core::Rng&) override {

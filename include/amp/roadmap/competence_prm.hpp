@@ -30,12 +30,12 @@ enum class CompetenceKind { kStatic, kGlobal, kLocal };  // PRM-C, PRM-G, PRM-L
 
 // Isto et al.'s PRM: uniform pseudo-random samples, each joined to up to k nearest vertices of each
 // connected component by the competence-controlled A* grid planner, until every seed is in one
-// component. `value` is o, s or n; with `meta` each run draws it instead, uniformly from the
-// paper's set (metaplanner_values), and the run record carries the value used under its name.
+// component. `value` is o, s or n; the run record carries it under that name. The paper's
+// metaplanner, which draws the value per run from metaplanner_values(), is the benchmark
+// harness's `draw:` (docs/experiment-format.md), as for any planner parameter.
 struct CompetencePrmSettings {
   CompetenceKind kind = CompetenceKind::kLocal;
   double value = 0.1;
-  bool meta = false;
   int k = 10;
   GridAStarSettings grid;
   void validate() const;  // throws ParameterError
@@ -55,7 +55,7 @@ class CompetencePrm final : public Planner {
   CompetencePrmSettings settings_;
 };
 
-// prm-c, prm-g, prm-l and their metaplanner forms prm-c-meta, prm-g-meta, prm-l-meta.
+// prm-c, prm-g and prm-l.
 void register_competence_prms(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap

@@ -31,6 +31,10 @@ RunOutcome execute_run(const world::Problem& problem, const std::string& planner
                        const PlannerRegistry& registry = builtin_planners(),
                        const std::atomic<bool>* cancel = nullptr);
 
+// `params` plus the problem's parameter defaults (`defaults.params`) that the planner declares and
+// `params` does not set: run settings override problem settings, which override planner defaults.
+ParamMap with_problem_params(const world::Problem& problem, const PlannerInfo& planner, ParamMap params);
+
 // Smallest clearance along `path`, sampling each segment at the space's resolution; 0 for an empty path.
 double path_clearance(const core::Space& space, const world::ValidityChecker& checker, const std::vector<State>& path);
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ struct ProblemDefaults {
   std::string planner = "prm";
   double time_limit_s = 30.0;
   std::size_t node_limit = 20000;
+  // Planner parameters this problem needs (e.g. the A* grid's `steps: 512` for the 6-DOF puzzle),
+  // as written; they apply to every planner that declares them, unless the run sets them itself.
+  std::map<std::string, std::string> params;
 };
 
 // A loaded planning problem: space, world + robot, and the configurations to connect.

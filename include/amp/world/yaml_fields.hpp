@@ -45,6 +45,8 @@ class YamlFields {
   // Resolves a path field relative to the directory of the file; throws if the file is missing.
   std::filesystem::path file_path(std::string_view key) const;
 
+  // The keys of this mapping in file order; throws unless it is a mapping without duplicates.
+  std::vector<std::string> keys() const;
   // Rejects keys not in `allowed` (catches typos in problem files).
   void allow_only(std::initializer_list<std::string_view> allowed) const;
 
