@@ -19,6 +19,7 @@ bool CompetentLocalPlanner::connect_edge(const State& a, const State& b, const E
   astar_->set_threshold(o_th);
   const bool ok = astar_->connect(a, b);
   policy_->record(request, ok);
+  if (ok && request.from != EdgeRequest::kNoVertex) astar_->last_moves(moves_[key(request)]);
   const GridSearchStats& s = astar_->last();
   ++calls_;
   cells_ += s.cells_checked;
@@ -28,8 +29,14 @@ bool CompetentLocalPlanner::connect_edge(const State& a, const State& b, const E
   return ok;
 }
 
-void CompetentLocalPlanner::edge_waypoints(const State& a, const State& b, std::vector<State>& out) {
-  astar_->edge_waypoints(a, b, out);
+void CompetentLocalPlanner::edge_waypoints(const State& a, const State& b, const EdgeRequest& request,
+                                           std::vector<State>& out) {
+  const auto it = moves_.find(key(request));
+  if (it != moves_.end()) {
+    astar_->replay(a, b, it->second, out);
+    return;
+  }
+  astar_->edge_waypoints(a, b, request, out);  // not one of ours: search again (counted)
   waypoint_cells_ += astar_->last().cells_checked;
 }
 

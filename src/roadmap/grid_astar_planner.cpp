@@ -46,16 +46,45 @@ void GridAStarPlanner::set_threshold(double o_th) {
 }
 
 bool GridAStarPlanner::connect(const State& a, const State& b) {
-  const bool ok = search(a, b, threshold_, nullptr);
+  const bool ok = search(a, b, threshold_);
   checker_->counters().add_local_plan(ok);
   return ok;
 }
 
-void GridAStarPlanner::edge_waypoints(const State& a, const State& b, std::vector<State>& out) {
-  out.clear();
-  if (!search(a, b, std::numeric_limits<double>::infinity(), &out)) {
+void GridAStarPlanner::edge_waypoints(const State& a, const State& b, const EdgeRequest&, std::vector<State>& out) {
+  if (!search(a, b, std::numeric_limits<double>::infinity())) {
     throw Error("grid A*: an accepted edge could not be searched again");
   }
+  last_moves(moves_);
+  replay(a, b, moves_, out);
+}
+
+void GridAStarPlanner::last_moves(std::vector<std::uint8_t>& moves) const {
+  moves.clear();
+  for (std::size_t i = 1; i < chain_.size(); ++i) {
+    const Cell& p = nodes_[static_cast<std::size_t>(chain_[i - 1])].cell;
+    const Cell& c = nodes_[static_cast<std::size_t>(chain_[i])].cell;
+    for (int axis = 0; axis < dims_; ++axis) {
+      const auto u = static_cast<std::size_t>(axis);
+      if (c[u] != p[u]) moves.push_back(static_cast<std::uint8_t>(2 * axis + (c[u] > p[u] ? 1 : 0)));
+    }
+  }
+}
+
+void GridAStarPlanner::replay(const State& a, const State& b, const std::vector<std::uint8_t>& moves,
+                              std::vector<State>& out) {
+  out.clear();
+  chart_.set_origin(a);
+  Cell c{};
+  for (const std::uint8_t m : moves) {
+    const auto axis = static_cast<std::size_t>(m / 2);
+    c[axis] = static_cast<std::int16_t>(c[axis] + ((m % 2) ? 1 : -1));
+    State s;
+    cell_state(c, s);
+    out.push_back(s);
+  }
+  // The root cell of b is its own state only when b lies on the grid.
+  if (!out.empty() && space_->distance(out.back(), b) == 0.0) out.pop_back();
 }
 
 std::uint64_t GridAStarPlanner::hash(const Cell& c) const {
@@ -128,8 +157,9 @@ void GridAStarPlanner::push(int side, std::int32_t node, int h) {
   std::push_heap(heap.begin(), heap.end(), [](const QueueEntry& x, const QueueEntry& y) { return later(x.key, y.key); });
 }
 
-bool GridAStarPlanner::search(const State& a, const State& b, double o_th, std::vector<State>* path) {
+bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
   last_ = GridSearchStats{};
+  chain_.clear();
   nodes_.clear();
   used_ = 0;
   if (++generation_ == 0) {  // wrapped: clear the stamps once every 2^32 calls
@@ -149,7 +179,7 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th, std::
     if (std::abs(t) > kMaxOffset) return false;
     target[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(t);
   }
-  if (target == origin) {  // b lies within half a cell of a
+  if (target == origin) {  // b lies within half a cell of a: no move
     last_.path_cells = 1;
     return true;
   }
@@ -198,11 +228,7 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th, std::
         if (seen >= 0) {
           const Node& other = nodes_[static_cast<std::size_t>(seen)];
           if (other.side == 1 - side) {  // the fronts meet
-            if (path != nullptr) {
-              trace(side == 0 ? current : seen, side == 0 ? seen : current, *path);
-              // The root cell of b is its own state only when b lies on the grid.
-              if (!path->empty() && space_->distance(path->back(), b) == 0.0) path->pop_back();
-            }
+            trace(side == 0 ? current : seen, side == 0 ? seen : current);
             last_.path_cells = static_cast<std::size_t>(c.g + other.g + 2);
             return true;
           }
@@ -226,19 +252,14 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th, std::
   }
 }
 
-void GridAStarPlanner::trace(std::int32_t from_forward, std::int32_t from_backward, std::vector<State>& path) {
+void GridAStarPlanner::trace(std::int32_t from_forward, std::int32_t from_backward) {
   chain_.clear();
   for (std::int32_t v = from_forward; v != 0; v = nodes_[static_cast<std::size_t>(v)].parent) chain_.push_back(v);
+  chain_.push_back(0);
   std::reverse(chain_.begin(), chain_.end());
   for (std::int32_t v = from_backward;; v = nodes_[static_cast<std::size_t>(v)].parent) {
     chain_.push_back(v);
     if (v == 1) break;
-  }
-  path.clear();
-  for (const std::int32_t v : chain_) {
-    State s;
-    cell_state(nodes_[static_cast<std::size_t>(v)].cell, s);
-    path.push_back(s);
   }
 }
 

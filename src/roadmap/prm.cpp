@@ -160,13 +160,15 @@ class PrmRun {
   }
 
   // The local planner's states between a and b (none for straight edges). Each edge was made by
-  // connect(newer vertex, older vertex), so it is asked in that direction; the search is query work.
+  // connect_edge(newer vertex, older vertex), so it is asked in that direction; any CD calls this
+  // takes are query work.
   void append_waypoints(VertexId a, VertexId b, std::vector<State>& path) {
     core::Counters& counters = ctx_.checker.counters();
     const core::Phase phase = counters.phase();
     counters.set_phase(core::Phase::kQuery);
     const VertexId newer = std::max(a, b), older = std::min(a, b);
-    local_planner_->edge_waypoints(roadmap_->state(newer), roadmap_->state(older), waypoints_);
+    local_planner_->edge_waypoints(roadmap_->state(newer), roadmap_->state(older),
+                                   EdgeRequest{newer, older, roadmap_->vertex_count()}, waypoints_);
     if (newer == a) {
       path.insert(path.end(), waypoints_.begin(), waypoints_.end());
     } else {

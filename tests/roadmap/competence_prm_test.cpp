@@ -67,6 +67,7 @@ TEST(ComponentNearestConnection, KNearestOfEachComponent) {
 struct Outcome {
   PlanResult result;
   std::uint64_t cd_planning = 0;
+  std::uint64_t cd_query = 0;
 };
 
 Outcome run(const world::Problem& p, CompetencePrmSettings s, std::uint64_t seed, std::size_t node_limit = 3000) {
@@ -77,7 +78,8 @@ Outcome run(const world::Problem& p, CompetencePrmSettings s, std::uint64_t seed
   core::Rng rng(seed);
   const core::StopCondition stop(1e6, node_limit);
   CompetencePrm planner(s);
-  Outcome o{planner.plan(ctx, stop, rng), counters.cd_calls(core::Phase::kPlanning)};
+  Outcome o{planner.plan(ctx, stop, rng), counters.cd_calls(core::Phase::kPlanning),
+            counters.cd_calls(core::Phase::kQuery)};
   return o;
 }
 
@@ -103,6 +105,7 @@ TEST(CompetencePrm, EveryFormSolvesTheGapWithAValidGridPath) {
       EXPECT_EQ(o.result.components >= 1, true);
       EXPECT_EQ(o.result.extra.at(competence_parameter(s.kind)), s.value);
       EXPECT_GT(o.result.extra.at("astar_calls"), 0.0);
+      EXPECT_EQ(o.cd_query, 0u);  // the path's grid states are replayed from stored moves, not searched
     }
   }
 }

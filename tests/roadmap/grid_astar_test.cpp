@@ -168,6 +168,16 @@ TEST(GridAStar, SameInputsSameSearch) {
   s.astar->edge_waypoints(p.seeds[0], p.seeds[1], w2);
   ASSERT_EQ(w1.size(), w2.size());
   for (std::size_t i = 0; i < w1.size(); ++i) EXPECT_EQ(w1[i], w2[i]);
+  // Replaying the accepted search's moves gives the same states without a CD call.
+  ASSERT_TRUE(s.astar->connect(p.seeds[0], p.seeds[1]));
+  std::vector<std::uint8_t> moves;
+  s.astar->last_moves(moves);
+  EXPECT_EQ(moves.size(), first.path_cells - 1);
+  const std::uint64_t calls = s.counters.cd_calls();
+  std::vector<State> w3;
+  s.astar->replay(p.seeds[0], p.seeds[1], moves, w3);
+  EXPECT_EQ(s.counters.cd_calls(), calls);
+  EXPECT_EQ(w3, w1);
 }
 
 TEST(GridAStar, ContinuousJointGoesTheShortWayRound) {

@@ -1,5 +1,7 @@
 #pragma once
+#include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "amp/roadmap/competence_policy.hpp"
@@ -10,18 +12,22 @@
 namespace amp::roadmap {
 
 // The A* grid planner with its threshold set per edge by a competence policy; reports what the
-// searches did (calls abandoned for competence, cells checked, thresholds used).
+// searches did (calls abandoned for competence, cells checked, thresholds used). Keeps the moves of
+// every accepted edge (a byte per grid step), so that a solution path costs no CD call to draw.
 class CompetentLocalPlanner final : public LocalPlanner {
  public:
   CompetentLocalPlanner(std::unique_ptr<GridAStarPlanner> astar, std::unique_ptr<CompetencePolicy> policy);
   bool connect(const State& a, const State& b) override { return connect_edge(a, b, EdgeRequest{}); }
   bool connect_edge(const State& a, const State& b, const EdgeRequest& request) override;
-  void edge_waypoints(const State& a, const State& b, std::vector<State>& out) override;
+  void edge_waypoints(const State& a, const State& b, const EdgeRequest& request, std::vector<State>& out) override;
   void report(std::map<std::string, double>& extra) const override;
 
  private:
+  static std::uint64_t key(const EdgeRequest& r) { return (static_cast<std::uint64_t>(r.from) << 32) ^ r.to; }
+
   std::unique_ptr<GridAStarPlanner> astar_;
   std::unique_ptr<CompetencePolicy> policy_;
+  std::unordered_map<std::uint64_t, std::vector<std::uint8_t>> moves_;  // by (from, to) of the request
   std::uint64_t calls_ = 0, abandoned_ = 0, exhausted_ = 0, cells_ = 0, waypoint_cells_ = 0;
   double threshold_sum_ = 0.0, threshold_max_ = 0.0;
 };

@@ -59,8 +59,15 @@ class GridAStarPlanner final : public LocalPlanner {
 
   bool connect(const State& a, const State& b) override;
   // Searches again without a threshold (same expansions, hence the same path as the accepted call)
-  // and returns every grid state strictly between a and b. Costs CD calls like the first search.
-  void edge_waypoints(const State& a, const State& b, std::vector<State>& out) override;
+  // and returns every grid state strictly between a and b. Costs CD calls like the first search;
+  // keeping last_moves() of the accepted call and replay()ing them costs none.
+  void edge_waypoints(const State& a, const State& b, const EdgeRequest& request, std::vector<State>& out) override;
+  void edge_waypoints(const State& a, const State& b, std::vector<State>& out) { edge_waypoints(a, b, {}, out); }
+
+  // The path of the last successful search as grid moves from a (one byte each: 2 * axis + (step > 0)).
+  void last_moves(std::vector<std::uint8_t>& moves) const;
+  // The states the moves visit from a (a excluded; b's cell dropped when it is b itself).
+  void replay(const State& a, const State& b, const std::vector<std::uint8_t>& moves, std::vector<State>& out);
 
   const GridSearchStats& last() const { return last_; }
   const GridChart& chart() const { return chart_; }
@@ -85,7 +92,7 @@ class GridAStarPlanner final : public LocalPlanner {
   };
   static constexpr std::int8_t kBlocked = 2;
 
-  bool search(const State& a, const State& b, double o_th, std::vector<State>* path);
+  bool search(const State& a, const State& b, double o_th);
   std::int32_t find(const Cell& c) const;
   std::int32_t insert(const Node& n);
   void grow_table();
@@ -93,7 +100,7 @@ class GridAStarPlanner final : public LocalPlanner {
   bool cell_state(const Cell& c, State& out);
   int manhattan(const Cell& c, const Cell& target) const;
   void push(int side, std::int32_t node, int h);
-  void trace(std::int32_t from_forward, std::int32_t from_backward, std::vector<State>& path);
+  void trace(std::int32_t from_forward, std::int32_t from_backward);
 
   const core::Space* space_;
   const world::ValidityChecker* checker_;
@@ -110,7 +117,8 @@ class GridAStarPlanner final : public LocalPlanner {
   std::array<std::vector<QueueEntry>, 2> open_;
   std::uint64_t sequence_ = 0;
   std::array<double, kMaxDims> x_{};
-  std::vector<std::int32_t> chain_;
+  std::vector<std::int32_t> chain_;  // node ids of the last path found, a's cell to b's
+  std::vector<std::uint8_t> moves_;
   State scratch_;
 };
 

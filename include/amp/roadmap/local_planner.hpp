@@ -27,9 +27,12 @@ class LocalPlanner {
   virtual bool connect(const State& a, const State& b) = 0;
   // The call a roadmap planner makes when it adds an edge; the default ignores the request.
   virtual bool connect_edge(const State& a, const State& b, const EdgeRequest& /*request*/) { return connect(a, b); }
-  // The states strictly between a and b on the path an accepted connect(a, b) found, in order from
-  // a; empty for planners whose edges are the space's geodesic (the straight line).
-  virtual void edge_waypoints(const State& /*a*/, const State& /*b*/, std::vector<State>& out) { out.clear(); }
+  // The states strictly between a and b on the path an accepted connect_edge(a, b, request) found,
+  // in order from a; empty for planners whose edges are the space's geodesic (the straight line).
+  virtual void edge_waypoints(const State& /*a*/, const State& /*b*/, const EdgeRequest& /*request*/,
+                              std::vector<State>& out) {
+    out.clear();
+  }
   // Planner-specific figures for the run record (e.g. cells searched); none by default.
   virtual void report(std::map<std::string, double>& /*extra*/) const {}
 };
