@@ -23,6 +23,8 @@ bool CompetentLocalPlanner::connect_edge(const State& a, const State& b, const E
   const GridSearchStats& s = astar_->last();
   ++calls_;
   cells_ += s.cells_checked;
+  move_checks_ += s.move_checks;
+  repairs_ += s.repairs;
   if (!ok) ++(s.abandoned ? abandoned_ : exhausted_);
   threshold_sum_ += o_th;
   threshold_max_ = std::max(threshold_max_, o_th);
@@ -45,6 +47,8 @@ void CompetentLocalPlanner::report(std::map<std::string, double>& extra) const {
   extra["astar_abandoned"] = static_cast<double>(abandoned_);   // stopped by O_th (or max_cells)
   extra["astar_exhausted"] = static_cast<double>(exhausted_);   // no grid path, or b's cell blocked
   extra["astar_cells"] = static_cast<double>(cells_);
+  extra["astar_move_checks"] = static_cast<double>(move_checks_);  // path moves checked at the space's resolution
+  extra["astar_repairs"] = static_cast<double>(repairs_);          // searches repeated around a clipping move
   extra["astar_path_cells_rechecked"] = static_cast<double>(waypoint_cells_);
   extra["threshold_mean"] = calls_ ? threshold_sum_ / static_cast<double>(calls_) : 0.0;
   extra["threshold_max"] = threshold_max_;
@@ -117,9 +121,9 @@ void register_competence_prms(PlannerRegistry& registry) {
   };
   const Form forms[] = {
       {CompetenceKind::kStatic, "prm-c", "static competence O_th = o", 8, 1, 1e6, "O_th, fixed"},
-      {CompetenceKind::kGlobal, "prm-g", "global competence O_th = (S / s) * 32", 1000, 1e-6, 1e9,
+      {CompetenceKind::kGlobal, "prm-g", "global competence O_th = (S / s) * 32", 1000, 1, 1e9,
        "roadmap size at which O_th = 32"},
-      {CompetenceKind::kLocal, "prm-l", "local competence O_th = 1 + n / r_s(v)", 0.1, 1e-6, 1e6,
+      {CompetenceKind::kLocal, "prm-l", "local competence O_th = 1 + n / r_s(v)", 0.1, 0.001, 1000,
        "scale of O_th over a vertex's failure ratio"},
   };
   for (const Form& f : forms) {

@@ -14,6 +14,8 @@ namespace {
 // Offsets beyond this many cells from a are treated as blocked (cells are stored as int16).
 constexpr int kMaxOffset = 32000;
 constexpr int kMaxSteps = 16000;
+// Searches run again after finding a path with a clipping move, before the call gives up.
+constexpr int kMaxRepairs = 16;
 
 bool later(std::uint64_t a, std::uint64_t b) { return a > b; }
 
@@ -160,6 +162,77 @@ void GridAStarPlanner::push(int side, std::int32_t node, int h) {
 bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
   last_ = GridSearchStats{};
   chain_.clear();
+  forbidden_.clear();
+  chart_.set_origin(a);
+  chart_.coordinates(b, x_.data());
+  origin_ = Cell{};
+  for (int i = 0; i < dims_; ++i) {
+    const double t = std::round(x_[static_cast<std::size_t>(i)] / chart_.step(i));
+    if (std::abs(t) > kMaxOffset) return false;
+    target_[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(t);
+  }
+  if (target_ == origin_) {  // b lies within half a cell of a: the one hop a -> b
+    last_.path_cells = 1;
+    return segment_free(a, b);
+  }
+  // O(C) >= 1 for every expanded cell (its g ancestors and the other front's g' cells were
+  // expanded first), so below 1 only b's cell next to a's can be reached: skip a doomed search.
+  if (o_th < 1.0 && manhattan(target_, origin_) > 1) {
+    last_.abandoned = true;
+    return false;
+  }
+  // b's root: the cell nearest b, which must itself be free (b is within half a step of it), as
+  // must the hop between them.
+  if (!cell_state(target_, target_state_)) return false;
+  ++last_.cells_checked;
+  if (!checker_->is_valid(target_state_) || !segment_free(target_state_, b)) return false;
+
+  // The search checks cells; the path it finds is then checked move by move at the space's
+  // resolution, as a straight-line edge would be. A move that clips an obstacle between two free
+  // cells is forbidden and the search run again (rare: thin obstacle corners).
+  for (int attempt = 0; attempt <= kMaxRepairs; ++attempt) {
+    if (!grid_search(o_th)) return false;
+    const std::size_t bad = first_clipping_move();
+    if (bad == 0) return true;
+    ++last_.repairs;
+    forbidden_.emplace_back(nodes_[static_cast<std::size_t>(chain_[bad - 1])].cell,
+                            nodes_[static_cast<std::size_t>(chain_[bad])].cell);
+    chain_.clear();
+  }
+  last_.abandoned = true;
+  return false;
+}
+
+bool GridAStarPlanner::segment_free(const State& a, const State& b) {
+  const double d = space_->distance(a, b);
+  const int segments = std::max(1, static_cast<int>(std::ceil(d / space_->resolution())));
+  for (int j = 1; j < segments; ++j) {
+    space_->interpolate(a, b, static_cast<double>(j) / segments, scratch_);
+    ++last_.move_checks;
+    if (!checker_->is_valid(scratch_)) return false;
+  }
+  return true;
+}
+
+std::size_t GridAStarPlanner::first_clipping_move() {
+  State from, to;
+  cell_state(nodes_[static_cast<std::size_t>(chain_[0])].cell, from);
+  for (std::size_t i = 1; i < chain_.size(); ++i) {
+    cell_state(nodes_[static_cast<std::size_t>(chain_[i])].cell, to);
+    if (!segment_free(from, to)) return i;
+    from = to;
+  }
+  return 0;
+}
+
+bool GridAStarPlanner::forbidden(const Cell& a, const Cell& b) const {
+  for (const auto& [x, y] : forbidden_) {
+    if ((x == a && y == b) || (x == b && y == a)) return true;
+  }
+  return false;
+}
+
+bool GridAStarPlanner::grid_search(double o_th) {
   nodes_.clear();
   used_ = 0;
   if (++generation_ == 0) {  // wrapped: clear the stamps once every 2^32 calls
@@ -169,39 +242,16 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
   sequence_ = 0;
   open_[0].clear();
   open_[1].clear();
+  last_.expanded = 0;
 
-  chart_.set_origin(a);
-  chart_.coordinates(b, x_.data());
-  Cell origin{};
-  Cell target{};
-  for (int i = 0; i < dims_; ++i) {
-    const double t = std::round(x_[static_cast<std::size_t>(i)] / chart_.step(i));
-    if (std::abs(t) > kMaxOffset) return false;
-    target[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(t);
-  }
-  if (target == origin) {  // b lies within half a cell of a: no move
-    last_.path_cells = 1;
-    return true;
-  }
-  // O(C) >= 1 for every expanded cell (its g ancestors and the other front's g' cells were
-  // expanded first), so below 1 only b's cell next to a's can be reached: skip a doomed search.
-  if (o_th < 1.0 && manhattan(target, origin) > 1) {
-    last_.abandoned = true;
-    return false;
-  }
-  // b's root: the cell nearest b, which must itself be free (b is within half a step of it).
-  if (!cell_state(target, scratch_)) return false;
-  ++last_.cells_checked;
-  if (!checker_->is_valid(scratch_)) return false;
-
-  insert(Node{origin, 0, 0, 0, -1});
-  insert(Node{target, 1, 0, 1, -1});
+  insert(Node{origin_, 0, 0, 0, -1});
+  insert(Node{target_, 1, 0, 1, -1});
   nodes_[0].parent = 0;
   const auto less_urgent = [](const QueueEntry& x, const QueueEntry& y) { return later(x.key, y.key); };
   open_[0].push_back(QueueEntry{0, 0});
   open_[1].push_back(QueueEntry{0, 1});
   std::array<std::int32_t, 2> last_depth{0, 0};
-  const std::array<const Cell*, 2> goal_of{&target, &origin};
+  const std::array<const Cell*, 2> goal_of{&target_, &origin_};
 
   for (int side = 0;; side = 1 - side) {
     auto& heap = open_[static_cast<std::size_t>(side)];
@@ -224,6 +274,7 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
       for (int dir = 0; dir < 2; ++dir) {
         Cell n = c.cell;
         n[static_cast<std::size_t>(axis)] = static_cast<std::int16_t>(n[static_cast<std::size_t>(axis)] + (dir ? 1 : -1));
+        if (!forbidden_.empty() && forbidden(c.cell, n)) continue;
         const std::int32_t seen = find(n);
         if (seen >= 0) {
           const Node& other = nodes_[static_cast<std::size_t>(seen)];

@@ -10,6 +10,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/se3_space.hpp"
+#include "../support/path_checks.hpp"
 #include "test_worlds.hpp"
 
 namespace amp::roadmap {
@@ -61,7 +62,8 @@ TEST(GridAStar, FreeSpaceGoesStraightWithCompetenceOne) {
   EXPECT_EQ(st.path_cells, 117u);
   EXPECT_DOUBLE_EQ(st.competence, 1.0);
   EXPECT_FALSE(st.abandoned);
-  EXPECT_EQ(s.counters.cd_calls(), st.cells_checked);  // every check is counted, once
+  EXPECT_EQ(s.counters.cd_calls(), st.cells_checked + st.move_checks);  // every check is counted, once
+  EXPECT_EQ(st.move_checks, 0u);  // a step (0.078) is shorter than the space's resolution (0.14)
   EXPECT_EQ(s.counters.lp_calls(), 1u);
   EXPECT_EQ(s.counters.lp_successes(), 1u);
 
@@ -121,6 +123,31 @@ TEST(GridAStar, DetourThroughTheGapNeedsCompetence) {
   core::Counters c2;
   const auto checker = p.environment->make_checker(c2);
   for (const State& q : path) EXPECT_TRUE(checker->is_valid(q));
+}
+
+TEST(GridAStar, AMoveThatClipsAThinObstacleIsForbiddenAndSearchedAround) {
+  // A sliver x in [4.52, 4.54] between the grid columns 4.5156 and 4.5938 of a search from (1, 1):
+  // every cell is free, but the straight row y = 1 crosses it. Edges are checked at 0.01.
+  world::Problem p = free_plane();
+  auto space = std::make_shared<core::JointSpace>(core::make_rn_space({0, 0}, {10, 10}));
+  space->set_resolution(0.01);
+  p.space = space;
+  p.environment = std::make_shared<test::BoxEnvironment>(std::vector<test::Box>{{4.52, 0.9, 4.54, 1.1}},
+                                                          test::RobotKind::kPoint);
+  Bench s(p);
+  const State a = test::state2(1, 1), b = test::state2(8, 1);
+  ASSERT_TRUE(s.astar->connect(a, b));
+  const GridSearchStats st = s.astar->last();
+  EXPECT_GE(st.repairs, 3u);  // rows y = 0.92, 1.0, 1.08 all cross the sliver
+  EXPECT_GT(st.move_checks, 0u);
+  EXPECT_EQ(s.counters.cd_calls(), st.cells_checked + st.move_checks);
+  std::vector<State> way;
+  s.astar->edge_waypoints(a, b, way);
+  std::vector<State> path{a};
+  path.insert(path.end(), way.begin(), way.end());
+  path.push_back(b);
+  p.seeds = {a, b};
+  amp::test::expect_valid_path(p, path, 4);
 }
 
 TEST(GridAStar, ClosedWallIsExhaustedNotAbandoned) {

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "amp/core/space.hpp"
@@ -29,6 +30,8 @@ struct GridSearchStats {
   double competence = 0.0;        // largest O(C) = F / distance travelled seen
   bool abandoned = false;         // stopped by the threshold or max_cells, not by exhaustion
   std::size_t path_cells = 0;     // cells on the path found (0 when none)
+  std::size_t move_checks = 0;    // CD calls checking moves on the path at the space's resolution
+  std::size_t repairs = 0;        // searches run again because a move clipped an obstacle
 };
 
 // Bidirectional A* on an implicit grid over the C-space (SPEC section 3; Isto et al.): the grid is
@@ -36,7 +39,9 @@ struct GridSearchStats {
 // coordinate by one step; g and h are Manhattan distances in cells, f = A g + B h, ties broken
 // toward repeating the move that reached the cell, then toward the newest cell. A cell is checked
 // once, when first reached; the two searches alternate and meet when one reaches a cell of the
-// other.
+// other. The path found is then checked move by move at the space's resolution (so that its edges
+// are as valid as a straight-line planner's: cells alone can straddle a thin obstacle corner); a
+// clipping move is forbidden and the search repeated. Both kinds of check are counted CD calls.
 //
 // Competence control: when a cell C is expanded, O(C) = F / (g(C) + g'), where F counts the cells
 // expanded so far by both searches (C included, roots not) and g' is the depth of the other
@@ -93,6 +98,10 @@ class GridAStarPlanner final : public LocalPlanner {
   static constexpr std::int8_t kBlocked = 2;
 
   bool search(const State& a, const State& b, double o_th);
+  bool grid_search(double o_th);
+  bool segment_free(const State& a, const State& b);
+  std::size_t first_clipping_move();  // index in chain_ of the first bad move's end; 0 if none
+  bool forbidden(const Cell& a, const Cell& b) const;
   std::int32_t find(const Cell& c) const;
   std::int32_t insert(const Node& n);
   void grow_table();
@@ -119,6 +128,9 @@ class GridAStarPlanner final : public LocalPlanner {
   std::array<double, kMaxDims> x_{};
   std::vector<std::int32_t> chain_;  // node ids of the last path found, a's cell to b's
   std::vector<std::uint8_t> moves_;
+  Cell origin_{}, target_{};
+  State target_state_;
+  std::vector<std::pair<Cell, Cell>> forbidden_;  // moves found to clip an obstacle, this call
   State scratch_;
 };
 
