@@ -46,8 +46,22 @@ INSTANTIATE_TEST_SUITE_P(Problems, BundledProblem,
                          ::testing::Combine(::testing::Values("maze.yaml", "l-tunnel.yaml", "hook.yaml", "walls.yaml",
                                                               "linkage.yaml", "maze3d.yaml", "walls3d.yaml",
                                                               "office-map.yaml", "movingai-rooms.yaml",
-                                                              "ompl/gap_planar.cfg", "ompl/cage_window.cfg"),
+                                                              "ompl/gap_planar.cfg", "ompl/cage_window.cfg",
+                                                              "scara-wicket.yaml", "puzzle.yaml"),
                                             ::testing::Values("prm", "uas")),
+                         [](const auto& info) {
+                           std::string n = std::filesystem::path(std::get<0>(info.param)).stem().string() + "_" +
+                                           std::get<1>(info.param);
+                           for (char& c : n) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           return n;
+                         });
+
+// Section 3's planners on its problems (the A* grid local planner's paths are checked at the
+// space's resolution too, between grid states), and on an arm and an OMPL.app SE3 problem.
+INSTANTIATE_TEST_SUITE_P(CompetencePrms, BundledProblem,
+                         ::testing::Combine(::testing::Values("scara-wicket.yaml", "puzzle.yaml", "linkage.yaml",
+                                                              "ompl/cage_window.cfg"),
+                                            ::testing::Values("prm-c", "prm-g", "prm-l")),
                          [](const auto& info) {
                            std::string n = std::filesystem::path(std::get<0>(info.param)).stem().string() + "_" +
                                            std::get<1>(info.param);
