@@ -1,5 +1,5 @@
-// `amp demo`: the README's main job. Plans every bundled problem and draws the results; later
-// capabilities (benchmark report, UAS, PRM-C/G/L, navigation) add their reduced experiments here.
+// `amp demo`: the README's main job. Plans every bundled problem and draws the results, then runs
+// the reduced experiments of each capability (benchmark report, UAS, PRM-C/G/L; navigation later).
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -24,7 +24,8 @@ namespace {
 // The bundled problems of the foundation, in the order the README lists them.
 constexpr const char* kDemoProblems[] = {
     "maze.yaml",  "l-tunnel.yaml", "hook.yaml",        "walls.yaml",          "linkage.yaml",
-    "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml",
+    "maze3d.yaml", "walls3d.yaml", "office-map.yaml", "movingai-rooms.yaml", "scara-wicket.yaml",
+    "puzzle.yaml",
 };
 
 constexpr std::size_t kMaxDrawnRoadmapNodes = 2000;
@@ -119,6 +120,11 @@ int run_demo(const DemoOptions& o) {
     std::printf("picture: %s\n", (out / "uas" / "maze-regions.svg").string().c_str());
   }
   run_demo_bench(dir / "experiments" / "uas-quick.yaml", out / "uas", 0);
+
+  // PRM-C/G/L: a reduced Table 1 of the run-cost variance paper (the A* grid local planner whose
+  // competence is static, global or local; metaplanner draws of o, s, n).
+  std::printf("\nRun-cost variance: PRM-C, PRM-G, PRM-L on the SCARA wicket and the puzzle (Table 1, reduced)\n");
+  run_demo_bench(dir / "experiments" / "run-cost-variance-quick.yaml", out / "run-cost-variance", 0);
   return failures == 0 ? kExitOk : kExitNotSolved;
 }
 

@@ -25,6 +25,7 @@ bool CompetentLocalPlanner::connect_edge(const State& a, const State& b, const E
   cells_ += s.cells_checked;
   move_checks_ += s.move_checks;
   repairs_ += s.repairs;
+  if (s.capped) ++capped_;
   if (!ok) ++(s.abandoned ? abandoned_ : exhausted_);
   threshold_sum_ += o_th;
   threshold_max_ = std::max(threshold_max_, o_th);
@@ -39,17 +40,16 @@ void CompetentLocalPlanner::edge_waypoints(const State& a, const State& b, const
     return;
   }
   astar_->edge_waypoints(a, b, request, out);  // not one of ours: search again (counted)
-  waypoint_cells_ += astar_->last().cells_checked;
 }
 
 void CompetentLocalPlanner::report(std::map<std::string, double>& extra) const {
   extra["astar_calls"] = static_cast<double>(calls_);
   extra["astar_abandoned"] = static_cast<double>(abandoned_);   // stopped by O_th (or max_cells)
+  extra["astar_capped"] = static_cast<double>(capped_);         // of which by max_cells
   extra["astar_exhausted"] = static_cast<double>(exhausted_);   // no grid path, or b's cell blocked
   extra["astar_cells"] = static_cast<double>(cells_);
   extra["astar_move_checks"] = static_cast<double>(move_checks_);  // path moves checked at the space's resolution
   extra["astar_repairs"] = static_cast<double>(repairs_);          // searches repeated around a clipping move
-  extra["astar_path_cells_rechecked"] = static_cast<double>(waypoint_cells_);
   extra["threshold_mean"] = calls_ ? threshold_sum_ / static_cast<double>(calls_) : 0.0;
   extra["threshold_max"] = threshold_max_;
 }

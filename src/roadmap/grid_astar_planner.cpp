@@ -292,6 +292,7 @@ bool GridAStarPlanner::grid_search(double o_th) {
         }
         if (last_.cells_checked >= settings_.max_cells) {
           last_.abandoned = true;
+          last_.capped = true;
           return false;
         }
         ++last_.cells_checked;

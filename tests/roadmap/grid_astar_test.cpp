@@ -167,6 +167,7 @@ TEST(GridAStar, MaxCellsStopsTheSearch) {
   Bench s(p, g);
   EXPECT_FALSE(s.astar->connect(p.seeds[0], p.seeds[1]));
   EXPECT_TRUE(s.astar->last().abandoned);
+  EXPECT_TRUE(s.astar->last().capped);
   EXPECT_EQ(s.astar->last().cells_checked, 500u);
 }
 

@@ -29,7 +29,7 @@ class CompetentLocalPlanner final : public LocalPlanner {
   std::unique_ptr<CompetencePolicy> policy_;
   std::unordered_map<std::uint64_t, std::vector<std::uint8_t>> moves_;  // by (from, to) of the request
   std::uint64_t calls_ = 0, abandoned_ = 0, exhausted_ = 0, cells_ = 0, move_checks_ = 0, repairs_ = 0;
-  std::uint64_t waypoint_cells_ = 0;
+  std::uint64_t capped_ = 0;
   double threshold_sum_ = 0.0, threshold_max_ = 0.0;
 };
 

@@ -29,6 +29,7 @@ struct GridSearchStats {
   std::size_t expanded = 0;       // F: cells expanded, roots excluded
   double competence = 0.0;        // largest O(C) = F / distance travelled seen
   bool abandoned = false;         // stopped by the threshold or max_cells, not by exhaustion
+  bool capped = false;            // of which: by max_cells
   std::size_t path_cells = 0;     // cells on the path found (0 when none)
   std::size_t move_checks = 0;    // CD calls checking moves on the path at the space's resolution
   std::size_t repairs = 0;        // searches run again because a move clipped an obstacle
