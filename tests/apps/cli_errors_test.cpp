@@ -277,6 +277,24 @@ TEST_F(CliErrors, UnknownParam) {
   expect_input_error(plan(data("ok.yaml"), "--param nope=3"), {"prm", "unknown parameter 'nope'", "valid: k"});
 }
 
+TEST_F(CliErrors, SeedInCollisionIsNamed) {
+  expect_input_error(plan(data("seed_in_collision.yaml"), "--planner prm-l"),
+                     {"seed_in_collision.yaml", "seeds[2]", "[5, 6]", "collision"});
+}
+
+TEST_F(CliErrors, CompetenceParametersOutOfRange) {
+  expect_input_error(plan(data("ok.yaml"), "--planner prm-c --param o=0.5"), {"prm-c", "'o'", "0.5 is outside"});
+  expect_input_error(plan(data("ok.yaml"), "--planner prm-g --param s=0"), {"prm-g", "'s'", "0 is outside"});
+  expect_input_error(plan(data("ok.yaml"), "--planner prm-l --param n=-1"), {"prm-l", "'n'", "-1 is outside"});
+  expect_input_error(plan(data("ok.yaml"), "--planner prm-l --param steps=0"), {"prm-l", "'steps'", "0 is outside"});
+}
+
+TEST_F(CliErrors, ProblemGridOfZeroSteps) {
+  // The problem's own planner parameter is checked like a command-line one, for the planners that take it.
+  expect_input_error(plan(data("grid_steps_zero.yaml"), "--planner prm-l"), {"prm-l", "'steps'", "0 is outside"});
+  EXPECT_EQ(plan(data("grid_steps_zero.yaml"), "--planner prm").exit_code, 0);
+}
+
 TEST_F(CliErrors, UnknownPlannerListsTheValidOnes) {
   expect_input_error(plan(data("ok.yaml"), "--planner nope"), {"unknown planner 'nope'", "valid: ", "prm"});
 }
