@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "amp/roadmap/grid_astar_planner.hpp"
 #include "amp/roadmap/straight_line_planner.hpp"
 #include "amp/world/problem.hpp"
 
@@ -43,6 +44,33 @@ TEST(EdgeCheckAllocation, StraightLineEdgesOnTheBundledMazeAllocateNothingAfterW
   EXPECT_EQ(g_allocations.load() - before, 0) << "edge checks allocated";
   EXPECT_GT(counters.cd_calls(), 199u);
   (void)free_edges;
+}
+
+// The A* grid planner keeps its hash table, nodes and heaps between calls: once they have grown to
+// the largest search, searching again allocates nothing (none per expanded cell). On the planar arm,
+// whose checker allocates nothing (FCL's checks of the SCARA's cylinders do).
+TEST(EdgeCheckAllocation, GridAStarOnTheArmAllocatesNothingOnceGrown) {
+  const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/linkage.yaml");
+  core::Counters counters;
+  const auto checker = p.environment->make_checker(counters);
+  GridAStarPlanner astar(*p.space, *checker);
+  astar.set_threshold(8.0);
+  core::Rng rng(3);
+  std::vector<State> states;
+  State s;
+  while (states.size() < 40) {
+    p.space->sample_uniform(rng, s);
+    if (checker->is_valid(s)) states.push_back(s);
+  }
+  std::size_t cells = 0;
+  for (std::size_t i = 0; i + 1 < states.size(); ++i) astar.connect(states[i], states[i + 1]);  // grows
+  const long before = g_allocations.load();
+  for (std::size_t i = 0; i + 1 < states.size(); ++i) {
+    astar.connect(states[i], states[i + 1]);
+    cells += astar.last().cells_checked;
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0) << "A* searches allocated";
+  EXPECT_GT(cells, 1000u);
 }
 
 }  // namespace
