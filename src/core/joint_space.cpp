@@ -55,11 +55,12 @@ JointSpace::JointSpace(std::string kind, std::vector<Joint> joints, double resol
   set_resolution(resolution_fraction * extent_);
 }
 
-void JointSpace::sample_uniform(Rng& rng, State& out) const {
+void JointSpace::from_unit(const double* u, State& out) const {
   out.resize(dimension());
   for (int i = 0; i < dimension(); ++i) {
     const Joint& j = joints_[i];
-    out[i] = j.kind == JointKind::kContinuous ? rng.uniform(-kPi, kPi) : rng.uniform(j.lo, j.hi);
+    // The same arithmetic as Rng::uniform(lo, hi), so random draws are unchanged by this map.
+    out[i] = j.kind == JointKind::kContinuous ? -kPi + (kPi - -kPi) * u[i] : j.lo + (j.hi - j.lo) * u[i];
   }
 }
 

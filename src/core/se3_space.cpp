@@ -42,11 +42,11 @@ State Se3Space::make_state(const Eigen::Vector3d& p, const Eigen::Quaterniond& q
   return s;
 }
 
-void Se3Space::sample_uniform(Rng& rng, State& out) const {
+void Se3Space::from_unit(const double* u, State& out) const {
   out.resize(7);
-  for (int i = 0; i < 3; ++i) out[i] = rng.uniform(lo_[i], hi_[i]);
+  for (int i = 0; i < 3; ++i) out[i] = lo_[i] + (hi_[i] - lo_[i]) * u[i];
   // Shoemake's method: uniform over SO(3).
-  const double u1 = rng.uniform01(), u2 = rng.uniform01(), u3 = rng.uniform01();
+  const double u1 = u[3], u2 = u[4], u3 = u[5];
   const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
   const double t2 = 2.0 * std::numbers::pi * u2, t3 = 2.0 * std::numbers::pi * u3;
   out[3] = a * std::sin(t2);

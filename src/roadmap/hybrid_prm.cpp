@@ -23,8 +23,9 @@ void HybridPrmSettings::validate() const {
 }
 
 std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
-                                                  std::shared_ptr<const SamplingDomain> domain, bool bridge) {
-  domain = domain_or_whole(std::move(domain), ctx.space);
+                                                  std::shared_ptr<const SamplingDomain> domain, bool bridge,
+                                                  DrawSequence sequence) {
+  domain = domain_or_whole(std::move(domain), ctx.space, sequence);
   const double r = sampler_distance(ctx.environment, ctx.space, 1.0).d;
   std::vector<HybridSampler::Arm> arms;
   arms.push_back({"uniform", std::make_unique<UniformDomainSampler>(domain, ctx.checker)});
@@ -47,7 +48,7 @@ std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings) {
   prm.k = settings.k;
   PrmParts parts;
   parts.sampler = [settings](const PlanningContext& ctx) -> std::unique_ptr<Sampler> {
-    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, settings.bridge), ctx.checker,
+    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, settings.bridge, settings.sequence), ctx.checker,
                                            settings.hybrid);
   };
   parts.observer = [](const PlanningContext& ctx, Sampler& sampler) -> std::unique_ptr<InsertionObserver> {
@@ -72,6 +73,8 @@ void register_hybrid_prm(PlannerRegistry& registry) {
            "a sample's cost: CD calls to sample and connect it (node) or to sample it only"},
           {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
           {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
+          {"sequence", ParamType::kChoice, "random", 0, 0, {"random", "halton"},
+           "how the samplers draw their start states: independent random, or a randomised Halton sequence"},
       }};
   registry.add(std::move(info), [](const Params& p) -> std::unique_ptr<Planner> {
     HybridPrmSettings s;
@@ -80,6 +83,7 @@ void register_hybrid_prm(PlannerRegistry& registry) {
     s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
     s.k = static_cast<int>(p.integer("k"));
     s.bridge = p.boolean("bridge");
+    s.sequence = parse_draw_sequence(p.choice("sequence"));
     return make_hybrid_prm(s);
   });
 }

@@ -158,7 +158,8 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
   const UasSettings s = settings_;
   if (global) {
     parts.sampler = [s](const PlanningContext& c) -> std::unique_ptr<Sampler> {
-      return std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge), c.checker, s.hybrid);
+      return std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge, s.sequence), c.checker,
+                                             s.hybrid);
     };
   } else {
     std::vector<Eigen::AlignedBox3d> boxes;
@@ -179,11 +180,12 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
     parts.sampler = [s, boxes, weights](const PlanningContext& c) -> std::unique_ptr<Sampler> {
       std::vector<std::unique_ptr<HybridSampler>> regions;
       for (const auto& box : boxes) {
-        auto domain = std::make_shared<ReferencePointBoxDomain>(c.space, c.environment, box);
+        auto domain = std::make_shared<ReferencePointBoxDomain>(c.space, c.environment, box, s.sequence);
         regions.push_back(std::make_unique<HybridSampler>(make_uas_samplers(c, domain, s.bridge), c.checker, s.hybrid));
       }
       if (s.whole_space_region) {  // the last region: keeps every part of the space reachable
-        regions.push_back(std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge), c.checker, s.hybrid));
+        regions.push_back(
+            std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge, s.sequence), c.checker, s.hybrid));
       }
       return std::make_unique<RegionalSampler>(std::move(regions), s.m, s.schedule, s.hybrid.gamma, weights);
     };
@@ -224,6 +226,8 @@ void register_uas(PlannerRegistry& registry) {
            "start the planning roadmap from the training roadmap"},
           {"whole_space_region", ParamType::kBool, d.whole_space_region, 0, 1, {},
            "the whole space takes a turn as one more region (keeps every passage reachable)"},
+          {"sequence", ParamType::kChoice, "random", 0, 0, {"random", "halton"},
+           "how the regions draw their start states: independent random, or a randomised Halton sequence"},
       }};
   registry.add(std::move(info), [](const Params& p) -> std::unique_ptr<Planner> {
     UasSettings s;
@@ -243,6 +247,7 @@ void register_uas(PlannerRegistry& registry) {
     s.bridge = p.boolean("bridge");
     s.reuse_training = p.boolean("reuse_training");
     s.whole_space_region = p.boolean("whole_space_region");
+    s.sequence = parse_draw_sequence(p.choice("sequence"));
     return std::make_unique<Uas>(std::move(s));
   });
 }

@@ -148,6 +148,23 @@ INSTANTIATE_TEST_SUITE_P(Bundled, SamplerPlanners,
                            return n;
                          });
 
+TEST(HybridPrm, HaltonSequenceSolvesWithValidPathsRepeatsAndDiffersFromRandom) {
+  for (const char* problem : {"walls", "maze"}) {
+    const world::Problem& p = bundled(problem);
+    const ParamMap halton{{"sequence", "halton"}};
+    const RunOutcome a = execute_run(p, "hybrid-prm", halton, 21, kNoTimeLimit, kNodeLimit);
+    ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << problem;
+    amp::test::expect_valid_path(p, a.path);
+    const RunOutcome b = execute_run(p, "hybrid-prm", halton, 21, kNoTimeLimit, kNodeLimit);
+    EXPECT_EQ(a.path, b.path);
+    EXPECT_EQ(a.record.cd_calls(), b.record.cd_calls());
+    const RunOutcome r = execute_run(p, "hybrid-prm", {{"sequence", "random"}}, 21, kNoTimeLimit, kNodeLimit);
+    EXPECT_NE(a.record.cd_calls(), r.record.cd_calls()) << "the sequence option changed nothing on " << problem;
+  }
+  EXPECT_THROW(execute_run(bundled("walls"), "hybrid-prm", {{"sequence", "sobol"}}, 1, kNoTimeLimit, kNodeLimit),
+               ParameterError);
+}
+
 TEST(HybridPrm, ReportsProbabilitiesSamplesAndClasses) {
   const world::Problem& p = bundled("walls");
   const RunOutcome o = execute_run(p, "hybrid-prm", {{"bridge", true}}, 4, kNoTimeLimit, kNodeLimit);

@@ -187,6 +187,36 @@ TEST(SamplingDomain, ReferencePointBoxIsUniformOverItsBox) {
                ParameterError);
 }
 
+TEST(SamplingDomain, HaltonBoxDrawsStayInTheBoxRepeatAndFillItEvenly) {
+  const world::Problem p = test::point_problem(true);
+  const Eigen::AlignedBox3d box(Eigen::Vector3d(2, 6, 0), Eigen::Vector3d(4, 7, 0));
+  const ReferencePointBoxDomain a(*p.space, *p.environment, box, DrawSequence::kHalton);
+  const ReferencePointBoxDomain b(*p.space, *p.environment, box, DrawSequence::kHalton);
+  core::Rng ra(2), rb(2);
+  // 512 draws on an 8 x 8 grid over the box (8 expected per cell). Pearson's statistic of the cell
+  // counts is chi-square with 63 degrees of freedom for independent draws (mean 63; below 31.5 with
+  // probability 3e-4); an even cover keeps it far lower.
+  constexpr int kSide = 8, kDraws = 512;
+  std::vector<int> cells(kSide * kSide, 0);
+  State s, t;
+  for (int i = 0; i < kDraws; ++i) {
+    ASSERT_TRUE(a.sample(ra, s));
+    ASSERT_TRUE(b.sample(rb, t));
+    ASSERT_EQ(s, t);
+    ASSERT_TRUE(a.contains(s));
+    const int cx = std::min(kSide - 1, static_cast<int>((s[0] - 2.0) / 2.0 * kSide));
+    const int cy = std::min(kSide - 1, static_cast<int>((s[1] - 6.0) / 1.0 * kSide));
+    ++cells[static_cast<std::size_t>(cx * kSide + cy)];
+  }
+  const double expected = static_cast<double>(kDraws) / (kSide * kSide);
+  double chi2 = 0.0;
+  for (const int c : cells) chi2 += (c - expected) * (c - expected) / expected;
+  EXPECT_LT(chi2, 31.5);
+  EXPECT_EQ(parse_draw_sequence("halton"), DrawSequence::kHalton);
+  EXPECT_EQ(parse_draw_sequence("random"), DrawSequence::kRandom);
+  EXPECT_THROW(parse_draw_sequence("sobol"), ParameterError);
+}
+
 TEST(UniformDomainSampler, OnTheWholeSpaceDrawsWhatUniformSamplerDraws) {
   const world::Problem p = test::point_problem(true);
   core::Counters counters;

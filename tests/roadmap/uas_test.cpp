@@ -227,6 +227,23 @@ INSTANTIATE_TEST_SUITE_P(Bundled, UasPlanner,
                                             ::testing::Values("walls", "maze")),
                          [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
 
+TEST(Uas, HaltonSequenceSolvesWithValidPathsAndRepeatsBitForBit) {
+  for (const char* problem : {"walls", "maze"}) {
+    const world::Problem& p = bundled(problem);
+    const ParamMap params{{"clustering", "ward"}, {"sequence", "halton"}};
+    const RunOutcome a = execute_run(p, "uas", params, 5, kNoTimeLimit, 20000);
+    ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << problem;
+    amp::test::expect_valid_path(p, a.path);
+    const RunOutcome b = execute_run(p, "uas", params, 5, kNoTimeLimit, 20000);
+    EXPECT_EQ(a.path, b.path);
+    EXPECT_EQ(a.record.extra, b.record.extra);
+    // Training does not use the sequence: the same regions as with random draws.
+    const RunOutcome r = execute_run(p, "uas", {{"clustering", "ward"}}, 5, kNoTimeLimit, 20000);
+    EXPECT_EQ(a.record.cd_calls_training, r.record.cd_calls_training);
+    EXPECT_EQ(a.record.extra.at("clusters"), r.record.extra.at("clusters"));
+  }
+}
+
 TEST(Uas, FallsBackToGlobalHybridPrmWhenClusteringFindsOneCluster) {
   // PG-means often accepts one Gaussian for the maze's training set; look for such a seed and check
   // that the run then sampled the whole space with one sampler set (global prob_ extras).

@@ -30,7 +30,7 @@ class JointSpace final : public Space {
 
   std::string_view kind() const override { return kind_; }
   int dimension() const override { return static_cast<int>(joints_.size()); }
-  void sample_uniform(Rng& rng, State& out) const override;
+  void from_unit(const double* u, State& out) const override;
   double distance(const State& a, const State& b) const override;
   void interpolate(const State& a, const State& b, double t, State& out) const override;
   bool in_bounds(const State& s) const override;

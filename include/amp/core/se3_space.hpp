@@ -16,7 +16,8 @@ class Se3Space final : public Space {
   std::string_view kind() const override { return "se3"; }
   int dimension() const override { return 7; }
   int dof() const override { return 6; }
-  void sample_uniform(Rng& rng, State& out) const override;
+  int unit_dimension() const override { return 6; }
+  void from_unit(const double* u, State& out) const override;
   double distance(const State& a, const State& b) const override;
   void interpolate(const State& a, const State& b, double t, State& out) const override;
   bool in_bounds(const State& s) const override;

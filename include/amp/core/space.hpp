@@ -19,7 +19,13 @@ class Space {
   // Degrees of freedom (SE3: 6).
   virtual int dof() const { return dimension(); }
 
-  virtual void sample_uniform(Rng& rng, State& out) const = 0;
+  // A state uniform in the bounds: unit_dimension() uniforms in [0, 1) mapped by from_unit.
+  void sample_uniform(Rng& rng, State& out) const;
+  // How many numbers in [0, 1) make one state (SE3: 6, three for the position and three for
+  // Shoemake's rotation), and the map from them onto the space that is uniform when they are. A
+  // low-discrepancy sequence fed through it covers the space evenly (HaltonSequence).
+  virtual int unit_dimension() const { return dimension(); }
+  virtual void from_unit(const double* u, State& out) const = 0;
   virtual double distance(const State& a, const State& b) const = 0;
   // The state a fraction t in [0, 1] of the way from a to b along the shortest path.
   virtual void interpolate(const State& a, const State& b, double t, State& out) const = 0;

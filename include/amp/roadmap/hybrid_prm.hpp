@@ -15,6 +15,7 @@ struct HybridPrmSettings {
   HybridSettings hybrid;
   int k = 10;           // neighbours tried per new node (as `prm`)
   bool bridge = false;  // add the bridge test as a fifth sampler
+  DrawSequence sequence = DrawSequence::kRandom;  // how the samplers' domain draws its states
   void validate() const;
 };
 
@@ -22,15 +23,17 @@ struct HybridPrmSettings {
 // (null = the whole space): uniform, Gaussian d = r, Gaussian d = 2r, OBPRM, and optionally the bridge
 // test (d = 2r); r = the robot's smallest diameter (1% of the space extent for a point robot).
 // Names: uniform, gaussian_r, gaussian_2r, obprm, bridge. Each counts into ctx.checker.
+// `sequence` is used when domain is null (a domain given keeps its own).
 std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
-                                                  std::shared_ptr<const SamplingDomain> domain, bool bridge);
+                                                  std::shared_ptr<const SamplingDomain> domain, bool bridge,
+                                                  DrawSequence sequence = DrawSequence::kRandom);
 
 // Hybrid PRM: PRM whose sampler is a HybridSampler over make_uas_samplers(whole space), rewarded
 // by UAS's structural reward. Extras: cc_* node classes, prob_/samples_/chosen_<sampler>,
 // sampler_distance_fallback (1 when r = 0 and 1% of the extent stood in for it).
 std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings);
 
-// Adds `hybrid-prm` (parameters gamma, alpha, k, bridge).
+// Adds `hybrid-prm` (parameters gamma, alpha, cost, k, bridge, sequence).
 void register_hybrid_prm(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap

@@ -1,8 +1,13 @@
 #pragma once
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
+#include "amp/core/halton_sequence.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/core/space.hpp"
 #include "amp/core/state.hpp"
@@ -13,13 +18,33 @@ class Environment;
 
 namespace amp::roadmap {
 
+// How a domain draws its states (beyond the papers): independent random states, or a randomised Halton
+// sequence through Space::from_unit, which covers the domain evenly, so the number of draws before
+// a small passage is hit varies far less from run to run (docs/uas.md).
+enum class DrawSequence : std::uint8_t { kRandom = 0, kHalton = 1 };
+DrawSequence parse_draw_sequence(const std::string& name);  // "random" | "halton"; throws ParameterError
+
+// Uniform states of a space, random or from a Halton sequence made on first use from the run's Rng.
+class StateDrawer {
+ public:
+  StateDrawer(const core::Space& space, DrawSequence sequence) : space_(&space), sequence_(sequence) {}
+  void draw(core::Rng& rng, State& out);
+
+ private:
+  const core::Space* space_;
+  DrawSequence sequence_;
+  std::optional<core::HaltonSequence> halton_;
+  std::vector<double> u_;
+};
+
 // Where a sampler draws its uniform states: the whole space, or a region of it (UAS runs one Hybrid
 // PRM per region, each sampling inside the region's box). Drawing costs no CD call.
 class SamplingDomain {
  public:
   virtual ~SamplingDomain() = default;
   // A state uniform in the domain (and in the space's bounds), or false after a bounded number of
-  // rejected draws (a region may be a thin sliver of the space).
+  // rejected draws (a region may be a thin sliver of the space). Not const in effect: a Halton
+  // domain advances its sequence (a domain belongs to one run).
   virtual bool sample(core::Rng& rng, State& out) const = 0;
   virtual bool contains(const State& s) const = 0;
 };
@@ -27,12 +52,14 @@ class SamplingDomain {
 // The whole space.
 class WholeSpaceDomain final : public SamplingDomain {
  public:
-  explicit WholeSpaceDomain(const core::Space& space) : space_(&space) {}
+  explicit WholeSpaceDomain(const core::Space& space, DrawSequence sequence = DrawSequence::kRandom)
+      : space_(&space), drawer_(space, sequence) {}
   bool sample(core::Rng& rng, State& out) const override;
   bool contains(const State& s) const override { return space_->in_bounds(s); }
 
  private:
   const core::Space* space_;
+  mutable StateDrawer drawer_;
 };
 
 // A box over the robot's reference point (Environment::reference_point: the position of a rigid
@@ -44,7 +71,8 @@ class ReferencePointBoxDomain final : public SamplingDomain {
   static constexpr int kMaxDraws = 10000;
 
   // Planar worlds: the box's z range is ignored. Throws ParameterError for an empty box.
-  ReferencePointBoxDomain(const core::Space& space, const world::Environment& environment, Eigen::AlignedBox3d box);
+  ReferencePointBoxDomain(const core::Space& space, const world::Environment& environment, Eigen::AlignedBox3d box,
+                          DrawSequence sequence = DrawSequence::kRandom);
   bool sample(core::Rng& rng, State& out) const override;
   bool contains(const State& s) const override;
   const Eigen::AlignedBox3d& box() const { return box_; }
@@ -54,10 +82,14 @@ class ReferencePointBoxDomain final : public SamplingDomain {
   const world::Environment* environment_;
   Eigen::AlignedBox3d box_;
   bool planar_;
+  // Rejection keeps a low-discrepancy sequence low-discrepancy inside the box: the accepted points
+  // are the sequence's points that fall in it.
+  mutable StateDrawer drawer_;
 };
 
 // The domain a null pointer stands for: the whole space.
 std::shared_ptr<const SamplingDomain> domain_or_whole(std::shared_ptr<const SamplingDomain> domain,
-                                                      const core::Space& space);
+                                                      const core::Space& space,
+                                                      DrawSequence sequence = DrawSequence::kRandom);
 
 }  // namespace amp::roadmap

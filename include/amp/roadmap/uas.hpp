@@ -7,6 +7,7 @@
 #include "amp/roadmap/hybrid_sampler.hpp"
 #include "amp/roadmap/planner.hpp"
 #include "amp/roadmap/sampler_bandit.hpp"
+#include "amp/roadmap/sampling_domain.hpp"
 #include "amp/roadmap/uas_regions.hpp"
 
 namespace amp::roadmap {
@@ -42,6 +43,8 @@ struct UasSettings {
   // training nodes need not cover every passage; without this, a passage outside every box is never
   // sampled and the run cannot finish (seen on the Maze, 2 of 100 runs stuck at 50000 nodes).
   bool whole_space_region = true;
+  // How every region (and the whole-space region) draws its states; see DrawSequence.
+  DrawSequence sequence = DrawSequence::kRandom;
   void validate() const;   // throws ParameterError
 };
 
