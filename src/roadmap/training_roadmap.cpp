@@ -59,6 +59,9 @@ TrainingSet build_training_roadmap(const PlanningContext& ctx, const TrainingSet
   nn.reserve(wanted);
   StraightLinePlanner local(ctx.space, ctx.checker);
   std::vector<Neighbor> neighbors;
+  std::vector<std::size_t> tried, linked;  // per vertex, for TrainingVisibility::kAllAttempts
+  tried.reserve(wanted);
+  linked.reserve(wanted);
   State q;
   const std::uint64_t max_attempts = wanted * static_cast<std::uint64_t>(settings.attempts_per_node);
   std::uint64_t attempts = 0;
@@ -78,15 +81,24 @@ TrainingSet build_training_roadmap(const PlanningContext& ctx, const TrainingSet
     Insertion info;
     for (const Neighbor& n : neighbors) {
       ++info.attempts;
+      ++tried[n.index];
       if (local.connect(q, set.roadmap->state(n.index))) {
         set.roadmap->add_edge(v, n.index, n.distance);
         ++info.successes;
+        ++linked[n.index];
       }
     }
     nn.add(v, q);
+    tried.push_back(info.attempts);
+    linked.push_back(info.successes);
     set.positions.push_back(ctx.environment.reference_point(q));
     set.visibility.push_back(info.visibility());
     set.sampler.push_back(static_cast<int>(which));
+  }
+  if (settings.visibility == TrainingVisibility::kAllAttempts) {
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      set.visibility[i] = tried[i] == 0 ? 1.0 : static_cast<double>(linked[i]) / static_cast<double>(tried[i]);
+    }
   }
   if (set.size() == 0 && set.stopped == core::StopReason::kNone) {
     throw Error("uas: the training roadmap found no free configuration in " + std::to_string(attempts) +

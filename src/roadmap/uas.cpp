@@ -212,6 +212,8 @@ void register_uas(PlannerRegistry& registry) {
            "region identification: kmeans, ward, pgmeans, or auto (highest silhouette)"},
           {"training_nodes", ParamType::kInteger, d.regions.training.nodes, 2, 100000, {}, "training roadmap size"},
           {"training_k", ParamType::kInteger, d.regions.training.k, 1, kMaxK, {}, "neighbours per training node"},
+          {"training_visibility", ParamType::kChoice, "insertion", 0, 0, {"insertion", "all"},
+           "a training node's visibility: its own attempts at insertion, or all attempts it took part in"},
           {"region_margin", ParamType::kReal, d.regions.margin, 0, 100, {}, "box growth per side, in robot sizes"},
           {"m", ParamType::kInteger, d.m, 1, kMaxM, {}, "samples per region per round"},
           {"schedule", ParamType::kChoice, "weighted", 0, 0, {"weighted", "round-robin", "adaptive"},
@@ -234,6 +236,8 @@ void register_uas(PlannerRegistry& registry) {
     s.regions.clustering = p.choice("clustering");
     s.regions.training.nodes = static_cast<int>(p.integer("training_nodes"));
     s.regions.training.k = static_cast<int>(p.integer("training_k"));
+    s.regions.training.visibility = p.choice("training_visibility") == "all" ? TrainingVisibility::kAllAttempts
+                                                                           : TrainingVisibility::kInsertion;
     s.regions.margin = p.real("region_margin");
     s.m = static_cast<int>(p.integer("m"));
     const std::string& schedule = p.choice("schedule");

@@ -12,11 +12,21 @@
 
 namespace amp::roadmap {
 
+// What a training node's visibility counts (its feature for clustering).
+enum class TrainingVisibility : std::uint8_t {
+  kInsertion = 0,  // its own k attempts when it was inserted (the paper)
+  // Beyond the paper: every attempt it took part in, its own and those of later nodes that chose it
+  // as a neighbour. Early nodes are measured on more than the few neighbours the roadmap then had,
+  // and every node on about 2k attempts instead of k; no extra CD call.
+  kAllAttempts = 1,
+};
+
 struct TrainingSettings {
   int nodes = 200;  // training roadmap size (UAS: 200; the paper's Tables 1-3 also use 100-400)
   int k = 5;        // low connection parameter: cheap, and enough to capture the topology
   // Sampling attempts allowed per wanted node before the roadmap is declared empty-handed.
   int attempts_per_node = 50;
+  TrainingVisibility visibility = TrainingVisibility::kInsertion;
   void validate() const;  // throws ParameterError
 };
 
@@ -25,7 +35,7 @@ struct TrainingSettings {
 struct TrainingSet {
   std::shared_ptr<Roadmap> roadmap;  // free vertices, checked edges (reusable by the planning PRM)
   std::vector<Eigen::Vector3d> positions;  // the robot's reference point per vertex
-  std::vector<double> visibility;          // successes / attempts over its k nearest at insertion
+  std::vector<double> visibility;          // successes / attempts (TrainingSettings::visibility says which)
   std::vector<int> sampler;                // 0 uniform, 1 Gaussian, 2 OBPRM
   bool planar = true;                      // planar world: Z is not a feature
   std::uint64_t failed_samples = 0;
