@@ -23,9 +23,9 @@ void HybridPrmSettings::validate() const {
 }
 
 std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
-                                                  std::shared_ptr<const SamplingDomain> domain, bool bridge,
-                                                  DrawSequence sequence) {
-  domain = domain_or_whole(std::move(domain), ctx.space, sequence);
+                                                  std::shared_ptr<const SamplingDomain> domain,
+                                                  const SamplerSetOptions& options) {
+  domain = domain_or_whole(std::move(domain), ctx.space, options.sequence);
   const double r = sampler_distance(ctx.environment, ctx.space, 1.0).d;
   std::vector<HybridSampler::Arm> arms;
   arms.push_back({"uniform", std::make_unique<UniformDomainSampler>(domain, ctx.checker)});
@@ -34,10 +34,16 @@ std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
   arms.push_back({"gaussian_2r", std::make_unique<GaussianSampler>(ctx.space, ctx.checker,
                                                                    GaussianSamplerSettings{2 * r, 100}, domain)});
   arms.push_back({"obprm", std::make_unique<ObprmSampler>(ctx.space, ctx.checker, ObprmSamplerSettings{}, domain)});
-  if (bridge) {
+  if (options.bridge) {
     BridgeSamplerSettings b;
     b.d = 2 * r;
     arms.push_back({"bridge", std::make_unique<BridgeSampler>(ctx.space, ctx.checker, b, domain)});
+  }
+  if (options.expansion) {
+    auto expansion = std::make_unique<ExpansionSampler>(ctx.space, ctx.checker, ExpansionSamplerSettings{2 * r, 20}, domain);
+    if (options.known != nullptr) expansion->add(*options.known);
+    InsertionObserver* observer = expansion.get();
+    arms.push_back({"expansion", std::move(expansion), observer});
   }
   return arms;
 }
@@ -48,7 +54,7 @@ std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings) {
   prm.k = settings.k;
   PrmParts parts;
   parts.sampler = [settings](const PlanningContext& ctx) -> std::unique_ptr<Sampler> {
-    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, settings.bridge, settings.sequence), ctx.checker,
+    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, {settings.bridge, settings.expansion, settings.sequence, nullptr}), ctx.checker,
                                            settings.hybrid);
   };
   parts.observer = [](const PlanningContext& ctx, Sampler& sampler) -> std::unique_ptr<InsertionObserver> {
@@ -64,7 +70,7 @@ void register_hybrid_prm(PlannerRegistry& registry) {
   const HybridPrmSettings d;
   PlannerInfo info{
       "hybrid-prm",
-      "Hybrid PRM (Hsu, Sanchez-Ante & Sun 2005) over uniform, Gaussian r and 2r, OBPRM (+ bridge) "
+      "Hybrid PRM (Hsu, Sanchez-Ante & Sun 2005) over uniform, Gaussian r and 2r, OBPRM (+ bridge, expansion) "
       "samplers, with UAS's structural reward",
       {
           {"gamma", ParamType::kReal, d.hybrid.gamma, 1e-6, 1, {}, "share of random sampler selection"},
@@ -73,6 +79,8 @@ void register_hybrid_prm(PlannerRegistry& registry) {
            "a sample's cost: CD calls to sample and connect it (node) or to sample it only"},
           {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
           {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
+          {"expansion", ParamType::kBool, d.expansion, 0, 1, {},
+           "add PRM's expansion step (a step from a node chosen by its failure ratio) as one more sampler"},
           {"sequence", ParamType::kChoice, "random", 0, 0, {"random", "halton"},
            "how the samplers draw their start states: independent random, or a randomised Halton sequence"},
       }};
@@ -83,6 +91,7 @@ void register_hybrid_prm(PlannerRegistry& registry) {
     s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
     s.k = static_cast<int>(p.integer("k"));
     s.bridge = p.boolean("bridge");
+    s.expansion = p.boolean("expansion");
     s.sequence = parse_draw_sequence(p.choice("sequence"));
     return make_hybrid_prm(s);
   });

@@ -91,8 +91,15 @@ void HybridSampler::report(std::map<std::string, double>& extra) const {
   }
 }
 
+void HybridSampler::observe(const Roadmap& roadmap, const Insertion& insertion) {
+  for (Arm& a : arms_) {
+    if (a.observer != nullptr) a.observer->inserted(roadmap, insertion);
+  }
+}
+
 void HybridObserver::inserted(const Roadmap& roadmap, const Insertion& insertion) {
   classes_.inserted(roadmap, insertion);
+  sampler_->observe(roadmap, insertion);
   if (!insertion.seed) sampler_->reward_last(insertion);
 }
 

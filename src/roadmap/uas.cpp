@@ -104,6 +104,10 @@ void RegionalSampler::reward_last(const Insertion& insertion) {
   region_bandit_.update(last_, region.last_reward(), static_cast<double>(c) / mean);
 }
 
+void RegionalSampler::observe(const Roadmap& roadmap, const Insertion& insertion) {
+  for (auto& r : regions_) r->observe(roadmap, insertion);
+}
+
 void RegionalSampler::report(std::map<std::string, double>& extra) const {
   for (std::size_t i = 0; i < regions_.size(); ++i) {
     const HybridSampler& h = *regions_[i];
@@ -156,10 +160,14 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
   PrmParts parts;
   if (settings_.reuse_training) parts.initial = model.training.roadmap;
   const UasSettings s = settings_;
+  // The reused training nodes are expansion candidates from the start (the observer is told only
+  // about the planning phase's insertions).
+  auto known = std::make_shared<VisibleNodes>();
+  if (settings_.reuse_training) *known = VisibleNodes{model.training.roadmap, model.training.visibility};
+  const SamplerSetOptions whole{s.bridge, s.expansion, s.sequence, known.get()};
   if (global) {
-    parts.sampler = [s](const PlanningContext& c) -> std::unique_ptr<Sampler> {
-      return std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge, s.sequence), c.checker,
-                                             s.hybrid);
+    parts.sampler = [s, known, whole](const PlanningContext& c) -> std::unique_ptr<Sampler> {
+      return std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, whole), c.checker, s.hybrid);
     };
   } else {
     std::vector<Eigen::AlignedBox3d> boxes;
@@ -177,15 +185,15 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
     for (std::size_t i = 0; i < weights.size() && settings_.schedule == RegionSchedule::kWeighted; ++i) {
       figures["region" + std::to_string(i) + "_weight"] = weights[i];
     }
-    parts.sampler = [s, boxes, weights](const PlanningContext& c) -> std::unique_ptr<Sampler> {
+    parts.sampler = [s, boxes, weights, known, whole](const PlanningContext& c) -> std::unique_ptr<Sampler> {
       std::vector<std::unique_ptr<HybridSampler>> regions;
       for (const auto& box : boxes) {
         auto domain = std::make_shared<ReferencePointBoxDomain>(c.space, c.environment, box, s.sequence);
-        regions.push_back(std::make_unique<HybridSampler>(make_uas_samplers(c, domain, s.bridge), c.checker, s.hybrid));
+        regions.push_back(std::make_unique<HybridSampler>(make_uas_samplers(c, domain, whole), c.checker, s.hybrid));
       }
       if (s.whole_space_region) {  // the last region: keeps every part of the space reachable
         regions.push_back(
-            std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, s.bridge, s.sequence), c.checker, s.hybrid));
+            std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, whole), c.checker, s.hybrid));
       }
       return std::make_unique<RegionalSampler>(std::move(regions), s.m, s.schedule, s.hybrid.gamma, weights);
     };
@@ -224,6 +232,8 @@ void register_uas(PlannerRegistry& registry) {
           {"cost", ParamType::kChoice, "node", 0, 0, {"node", "sampling"},
            "a sample's cost: CD calls to sample and connect it (node) or to sample it only"},
           {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
+          {"expansion", ParamType::kBool, d.expansion, 0, 1, {},
+           "add PRM's expansion step (a step from a node chosen by its failure ratio) to every region"},
           {"reuse_training", ParamType::kBool, d.reuse_training, 0, 1, {},
            "start the planning roadmap from the training roadmap"},
           {"whole_space_region", ParamType::kBool, d.whole_space_region, 0, 1, {},
@@ -249,6 +259,7 @@ void register_uas(PlannerRegistry& registry) {
     s.hybrid.alpha = p.real("alpha");
     s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
     s.bridge = p.boolean("bridge");
+    s.expansion = p.boolean("expansion");
     s.reuse_training = p.boolean("reuse_training");
     s.whole_space_region = p.boolean("whole_space_region");
     s.sequence = parse_draw_sequence(p.choice("sequence"));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -105,6 +106,45 @@ TEST(TrainingRoadmap, HasFixedSamplerProportionsVisibilitiesAndCountsItsCdCalls)
   EXPECT_EQ(f(5, 2), t.positions[5].y());
   EXPECT_GT(counters.cd_calls(core::Phase::kTraining), 0u);
   EXPECT_EQ(counters.cd_calls(core::Phase::kPlanning), 0u);
+}
+
+// training_visibility=all: the same roadmap, and each node's visibility = its edges / every attempt it
+// took part in, recounted here by brute force (node j tried its k nearest among nodes 0..j-1).
+TEST(TrainingRoadmap, VisibilityOverAllAttemptsMatchesABruteForceRecount) {
+  const world::Problem& p = bundled("maze");
+  const core::StopCondition stop(kNoTimeLimit, 1000000);
+  auto build = [&](TrainingVisibility visibility) {
+    core::Counters counters;
+    const auto checker = p.environment->make_checker(counters);
+    const PlanningContext ctx{*p.space, *p.environment, *checker, p.seeds};
+    core::Rng rng(11);
+    TrainingSettings settings;
+    settings.visibility = visibility;
+    return build_training_roadmap(ctx, settings, stop, rng);
+  };
+  const TrainingSet own = build(TrainingVisibility::kInsertion);
+  const TrainingSet all = build(TrainingVisibility::kAllAttempts);
+  ASSERT_EQ(own.size(), all.size());
+  ASSERT_EQ(own.roadmap->edge_count(), all.roadmap->edge_count());
+  const std::size_t n = all.size();
+  const std::size_t k = static_cast<std::size_t>(TrainingSettings{}.k);
+  std::vector<std::size_t> tried(n, 0);
+  for (std::size_t j = 1; j < n; ++j) {
+    std::vector<std::pair<double, std::size_t>> d;
+    for (std::size_t i = 0; i < j; ++i) d.emplace_back(p.space->distance(all.roadmap->state(j), all.roadmap->state(i)), i);
+    const std::size_t m = std::min(k, j);
+    std::partial_sort(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(m), d.end());
+    tried[j] += m;
+    for (std::size_t t = 0; t < m; ++t) ++tried[d[t].second];
+  }
+  int differ = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_TRUE(all.roadmap->state(i) == own.roadmap->state(i));
+    const double expected = tried[i] == 0 ? 1.0 : static_cast<double>(all.roadmap->edges(i).size()) / static_cast<double>(tried[i]);
+    EXPECT_NEAR(all.visibility[i], expected, 1e-12) << "node " << i;
+    differ += all.visibility[i] != own.visibility[i];
+  }
+  EXPECT_GT(differ, 0);  // the option changes the feature
 }
 
 TEST(TrainingRoadmap, WithNoFreeSpaceFailsWithAClearMessage) {

@@ -39,6 +39,9 @@ class AdaptiveSampler : public Sampler {
   virtual void reward_last(const Insertion& insertion) = 0;
   // Its per-run figures (PlanResult::extra).
   virtual void report(std::map<std::string, double>& extra) const = 0;
+  // Every vertex the run inserts, seeds included, before reward_last: samplers that grow from the
+  // roadmap (the expansion step) learn their candidates here.
+  virtual void observe(const Roadmap& roadmap, const Insertion& insertion) = 0;
 };
 
 // One Hybrid PRM sampler set: a bandit over named samplers (Hsu, Sanchez-Ante & Sun 2005) rewarded by
@@ -54,6 +57,8 @@ class HybridSampler final : public AdaptiveSampler {
   struct Arm {
     std::string name;
     std::unique_ptr<Sampler> sampler;
+    // The same sampler when it also observes insertions (ExpansionSampler), else null. Not owning.
+    InsertionObserver* observer = nullptr;
   };
 
   // Throws ParameterError for bad settings or no arms.
@@ -64,6 +69,8 @@ class HybridSampler final : public AdaptiveSampler {
   bool sample(core::Rng& rng, State& out) override;
   // The UAS reward of the last sample, now inserted: 1 for cc-create / cc-merge, exp(-alpha v^2) else.
   void reward_last(const Insertion& insertion) override;
+  // Tells the observing arms.
+  void observe(const Roadmap& roadmap, const Insertion& insertion) override;
   // The reward and raw cost (CD calls, as settings.cost counts them) of the last rewarded sample.
   double last_reward() const { return last_reward_; }
   std::uint64_t last_cd_calls() const { return last_cd_calls_; }

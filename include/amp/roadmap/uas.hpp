@@ -36,6 +36,7 @@ struct UasSettings {
   int k = 20;              // neighbours tried per new node, in the whole roadmap
   HybridSettings hybrid;   // each region's Hybrid PRM
   bool bridge = false;     // the bridge test as a fifth sampler in every region
+  bool expansion = false;  // PRM's expansion step as one more sampler in every region
   // Start the planning roadmap from the training roadmap (its nodes and checked edges), so the
   // training CD calls also buy roadmap. Off: the paper's separate training and planning roadmaps.
   bool reuse_training = true;
@@ -60,6 +61,7 @@ class RegionalSampler final : public AdaptiveSampler {
                   std::vector<double> weights = {});
   bool sample(core::Rng& rng, State& out) override;
   void reward_last(const Insertion& insertion) override;
+  void observe(const Roadmap& roadmap, const Insertion& insertion) override;  // tells every region
   // samples_/chosen_<sampler> summed over regions; region<i>_prob_<sampler> per region.
   void report(std::map<std::string, double>& extra) const override;
   std::size_t regions() const { return regions_.size(); }
