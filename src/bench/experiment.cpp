@@ -100,6 +100,7 @@ void check_planner(const PlannerConfig& c, const std::vector<ExperimentProblem>&
 std::string experiment_fingerprint(const Experiment& e) {
   std::ostringstream canon;
   canon << "seed=" << e.seed << ";runs=" << e.runs << ";time=" << e.time_limit_s << ";nodes=" << e.node_limit << ';';
+  if (e.common_seeds) canon << "common_seeds;";  // only when set: older fingerprints stay valid
   for (const auto& p : e.problems) canon << "problem=" << p.label << ':' << fnv1a(read_file(p.file)) << ';';
   for (const auto& c : e.planners) {
     canon << "planner=" << c.label << ':' << c.planner;
@@ -126,7 +127,8 @@ TrialId trial_id(const Experiment& e, std::size_t index) {
 }
 
 std::uint64_t trial_seed(const Experiment& e, const TrialId& id) {
-  const std::uint64_t who = fnv1a(e.planners[id.planner].label, fnv1a(e.problems[id.problem].label + '\x1f'));
+  const std::uint64_t problem = fnv1a(e.problems[id.problem].label + '\x1f');
+  const std::uint64_t who = e.common_seeds ? problem : fnv1a(e.planners[id.planner].label, problem);
   return core::derive_seed(core::derive_seed(e.seed, who), static_cast<std::uint64_t>(id.run));
 }
 
@@ -147,7 +149,8 @@ roadmap::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<
 Experiment load_experiment(const std::filesystem::path& file) {
   const world::YamlFields root(world::load_yaml_file(file), file, "");
   if (!root.is_map()) root.fail("", "an experiment file must be a YAML mapping");
-  root.allow_only({"name", "description", "seed", "runs", "time_limit", "node_limit", "problems", "planners"});
+  root.allow_only(
+      {"name", "description", "seed", "runs", "time_limit", "node_limit", "common_seeds", "problems", "planners"});
   Experiment e;
   e.file = file;
   e.name = root.string("name", file.stem().string());
@@ -161,6 +164,7 @@ Experiment load_experiment(const std::filesystem::path& file) {
   const long long nodes = root.integer("node_limit", static_cast<long long>(e.node_limit));
   if (nodes < 1) root.fail("node_limit", "expected a positive integer, got " + std::to_string(nodes));
   e.node_limit = static_cast<std::size_t>(nodes);
+  e.common_seeds = root.boolean("common_seeds", false);
 
   const world::YamlFields problems = root.child("problems");
   if (problems.size() == 0) problems.fail("", "expected at least one problem");

@@ -95,6 +95,7 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
                        {"runs", e.runs},
                        {"time_limit_s", e.time_limit_s},
                        {"node_limit", e.node_limit},
+                       {"common_seeds", e.common_seeds},
                        {"fingerprint", e.fingerprint},
                        {"censoring", "runs stopped at a limit enter cost statistics with the cost spent"}};
   out["problems"] = nlohmann::json::array();

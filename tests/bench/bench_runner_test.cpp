@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 
 #include "amp/bench/merge.hpp"
 #include "amp/core/error.hpp"
+#include "amp/core/rng.hpp"
 
 namespace amp::bench {
 namespace {
@@ -164,6 +166,40 @@ TEST_F(BenchRunnerTest, TrialSeedsDependOnIdentityNotOrder) {
   ASSERT_EQ(s.problems[b.problem].label, e.problems[a.problem].label);
   EXPECT_EQ(trial_seed(e, a), trial_seed(s, b));
   EXPECT_NE(trial_seed(e, trial_id(e, 0)), trial_seed(e, trial_id(e, 1)));
+}
+
+// common_seeds: run i of every planner on a problem shares its seed (and no other trial does), the
+// same identity as the SplitMix64 formula of docs/experiment-format.md, and the fingerprint changes.
+TEST_F(BenchRunnerTest, CommonSeedsGiveEveryPlannerTheSameSeedPerRun) {
+  const fs::path problems = fs::path(AMP_SOURCE_DIR) / "problems";
+  const std::string body = "seed: 11\nruns: 3\nproblems:\n  - " + (problems / "linkage.yaml").string() + "\n  - " +
+                           (problems / "office-map.yaml").string() + "\nplanners:\n  - prm\n  - hybrid-prm\n";
+  std::ofstream(root_ / "common.yaml") << "name: common\ncommon_seeds: true\n" << body;
+  std::ofstream(root_ / "own.yaml") << "name: common\n" << body;
+  const Experiment c = load_experiment(root_ / "common.yaml");
+  const Experiment o = load_experiment(root_ / "own.yaml");
+  EXPECT_TRUE(c.common_seeds);
+  EXPECT_FALSE(o.common_seeds);
+  EXPECT_NE(c.fingerprint, o.fingerprint);
+  std::set<std::uint64_t> distinct;
+  for (std::size_t t = 0; t < c.trial_count(); ++t) {
+    const TrialId id = trial_id(c, t);
+    TrialId other = id;
+    other.planner = 1 - id.planner;
+    EXPECT_EQ(trial_seed(c, id), trial_seed(c, other));
+    EXPECT_NE(trial_seed(o, id), trial_seed(o, other));
+    distinct.insert(trial_seed(c, id));
+    const std::uint64_t problem_hash = [&] {
+      std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a of "<problem>\x1f"
+      for (const char ch : c.problems[id.problem].label + '\x1f') {
+        h ^= static_cast<unsigned char>(ch);
+        h *= 0x100000001b3ULL;
+      }
+      return h;
+    }();
+    EXPECT_EQ(trial_seed(c, id), core::derive_seed(core::derive_seed(11, problem_hash), static_cast<std::uint64_t>(id.run)));
+  }
+  EXPECT_EQ(distinct.size(), 6u);  // 2 problems x 3 runs
 }
 
 TEST_F(BenchRunnerTest, ExperimentErrorsNameTheField) {

@@ -36,6 +36,10 @@ struct Experiment {
   int runs = 50;
   double time_limit_s = 30.0;
   std::size_t node_limit = 50000;
+  // Common random numbers: run i of every planner configuration on a problem gets the same seed, so
+  // that planners which spend their first random numbers alike (UAS's training roadmap under each
+  // clustering method) can be compared run by run (paired tests). Off: each configuration its own.
+  bool common_seeds = false;
   std::vector<ExperimentProblem> problems;
   std::vector<PlannerConfig> planners;
   // Hash of everything that decides the results (not of the file's layout or comments): shards and
