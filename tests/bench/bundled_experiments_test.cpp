@@ -1,4 +1,4 @@
-// Every experiment file bundled in problems/experiments loads: its problems, planners, parameters,
+// Every experiment file bundled in problems/experiments (and its subfolders) loads: its problems, planners, parameters,
 // draws and the problems' own planner parameters are all checked before a run would start.
 #include <filesystem>
 #include <string>
@@ -14,7 +14,7 @@ namespace {
 TEST(BundledExperiments, EveryFileLoads) {
   const std::filesystem::path dir = std::filesystem::path(AMP_SOURCE_DIR) / "problems" / "experiments";
   std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
     if (e.path().extension() == ".yaml") files.push_back(e.path());
   }
   ASSERT_GE(files.size(), 8u);
