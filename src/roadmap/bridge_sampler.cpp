@@ -9,12 +9,7 @@
 namespace amp::roadmap {
 
 void BridgeSamplerSettings::validate() const {
-  if (!(d > 0.0) || !std::isfinite(d)) {
-    throw ParameterError("bridge sampler: d must be positive and finite, got " + std::to_string(d));
-  }
-  if (max_attempts < 1) {
-    throw ParameterError("bridge sampler: max_attempts must be >= 1, got " + std::to_string(max_attempts));
-  }
+  validate_offset_settings("bridge", d, max_attempts);
   if (!(uniform_mix >= 0.0 && uniform_mix <= 1.0)) {
     throw ParameterError("bridge sampler: uniform_mix must be in [0, 1], got " + std::to_string(uniform_mix));
   }

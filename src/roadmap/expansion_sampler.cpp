@@ -10,12 +10,7 @@
 namespace amp::roadmap {
 
 void ExpansionSamplerSettings::validate() const {
-  if (!(d > 0.0) || !std::isfinite(d)) {
-    throw ParameterError("expansion sampler: d must be positive and finite, got " + std::to_string(d));
-  }
-  if (max_attempts < 1) {
-    throw ParameterError("expansion sampler: max_attempts must be >= 1, got " + std::to_string(max_attempts));
-  }
+  validate_offset_settings("expansion", d, max_attempts);
 }
 
 ExpansionSampler::ExpansionSampler(const core::Space& space, const world::ValidityChecker& checker,

@@ -9,12 +9,7 @@
 namespace amp::roadmap {
 
 void GaussianSamplerSettings::validate() const {
-  if (!(d > 0.0) || !std::isfinite(d)) {
-    throw ParameterError("gaussian sampler: d must be positive and finite, got " + std::to_string(d));
-  }
-  if (max_attempts < 1) {
-    throw ParameterError("gaussian sampler: max_attempts must be >= 1, got " + std::to_string(max_attempts));
-  }
+  validate_offset_settings("gaussian", d, max_attempts);
 }
 
 GaussianSampler::GaussianSampler(const core::Space& space, const world::ValidityChecker& checker,

@@ -2,10 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
+#include "amp/core/error.hpp"
 #include "amp/world/environment.hpp"
 
 namespace amp::roadmap {
+
+void validate_offset_settings(std::string_view sampler, double d, int max_attempts) {
+  if (!(d > 0.0) || !std::isfinite(d)) {
+    throw ParameterError(std::string(sampler) + " sampler: d must be positive and finite, got " + std::to_string(d));
+  }
+  if (max_attempts < 1) {
+    throw ParameterError(std::string(sampler) + " sampler: max_attempts must be >= 1, got " + std::to_string(max_attempts));
+  }
+}
 
 SamplerDistance sampler_distance(const world::Environment& environment, const core::Space& space, double scale) {
   const double r = environment.robot_min_diameter();

@@ -1,4 +1,6 @@
 #pragma once
+#include <string_view>
+
 #include "amp/core/rng.hpp"
 #include "amp/core/space.hpp"
 #include "amp/core/state.hpp"
@@ -18,6 +20,10 @@ struct SamplerDistance {
 };
 inline constexpr double kFallbackExtentFraction = 0.01;
 SamplerDistance sampler_distance(const world::Environment& environment, const core::Space& space, double scale);
+
+// The settings every offset-drawing sampler shares (Gaussian, bridge, expansion): throws
+// ParameterError naming `sampler` unless d is positive and finite and max_attempts >= 1.
+void validate_offset_settings(std::string_view sampler, double d, int max_attempts);
 
 // `out` = `from` moved a distance `delta` >= 0 (the space's metric) along a random direction: towards
 // a uniform state u of the space, along the space's geodesic (so SE2/SE3/linkages are handled), but
