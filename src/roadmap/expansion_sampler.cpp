@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
-#include "amp/core/error.hpp"
 #include "amp/roadmap/random_offset.hpp"
 
 namespace amp::roadmap {

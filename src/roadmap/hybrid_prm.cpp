@@ -54,8 +54,8 @@ std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings) {
   prm.k = settings.k;
   PrmParts parts;
   parts.sampler = [settings](const PlanningContext& ctx) -> std::unique_ptr<Sampler> {
-    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, {settings.bridge, settings.expansion, settings.sequence, nullptr}), ctx.checker,
-                                           settings.hybrid);
+    const SamplerSetOptions options{settings.bridge, settings.expansion, settings.sequence, nullptr};
+    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, options), ctx.checker, settings.hybrid);
   };
   parts.observer = [](const PlanningContext& ctx, Sampler& sampler) -> std::unique_ptr<InsertionObserver> {
     const bool fallback = sampler_distance(ctx.environment, ctx.space, 1.0).fallback;

@@ -162,11 +162,13 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
   const UasSettings s = settings_;
   // The reused training nodes are expansion candidates from the start (the observer is told only
   // about the planning phase's insertions).
-  auto known = std::make_shared<VisibleNodes>();
-  if (settings_.reuse_training) *known = VisibleNodes{model.training.roadmap, model.training.visibility};
-  const SamplerSetOptions whole{s.bridge, s.expansion, s.sequence, known.get()};
+  std::shared_ptr<const VisibleNodes> known;
+  if (settings_.reuse_training) {
+    known = std::make_shared<const VisibleNodes>(VisibleNodes{model.training.roadmap, model.training.visibility});
+  }
+  const SamplerSetOptions whole{s.bridge, s.expansion, s.sequence, known};
   if (global) {
-    parts.sampler = [s, known, whole](const PlanningContext& c) -> std::unique_ptr<Sampler> {
+    parts.sampler = [s, whole](const PlanningContext& c) -> std::unique_ptr<Sampler> {
       return std::make_unique<HybridSampler>(make_uas_samplers(c, nullptr, whole), c.checker, s.hybrid);
     };
   } else {
@@ -185,7 +187,7 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
     for (std::size_t i = 0; i < weights.size() && settings_.schedule == RegionSchedule::kWeighted; ++i) {
       figures["region" + std::to_string(i) + "_weight"] = weights[i];
     }
-    parts.sampler = [s, boxes, weights, known, whole](const PlanningContext& c) -> std::unique_ptr<Sampler> {
+    parts.sampler = [s, boxes, weights, whole](const PlanningContext& c) -> std::unique_ptr<Sampler> {
       std::vector<std::unique_ptr<HybridSampler>> regions;
       for (const auto& box : boxes) {
         auto domain = std::make_shared<ReferencePointBoxDomain>(c.space, c.environment, box, s.sequence);

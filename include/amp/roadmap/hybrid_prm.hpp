@@ -28,7 +28,7 @@ struct SamplerSetOptions {
   DrawSequence sequence = DrawSequence::kRandom;  // used when the domain is null (a domain keeps its own)
   // Expansion candidates that exist before the run's first insertion (UAS's reused training
   // roadmap). Optional.
-  const VisibleNodes* known = nullptr;
+  std::shared_ptr<const VisibleNodes> known;
 };
 
 // The UAS sampler set (seeds/uas-region-identification.txt, 4.1.2), each restricted to `domain`
