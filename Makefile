@@ -8,8 +8,9 @@ DEMO_OUT  ?= out/demo
 
 all: build
 
+# `make test` also installs the test-only packages (OMPL for tests/oracle); `make demo` does not.
 deps:
-	@bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh $(DEPS_FLAGS)
 
 build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -18,6 +19,7 @@ build: deps
 demo: build
 	./$(BUILD)/bin/amp demo --out $(DEMO_OUT)
 
+test: DEPS_FLAGS = --test
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 

@@ -1,6 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages AMP builds with, only those not yet installed.
+# --test adds the packages only the test suite needs (OMPL, the oracle of tests/oracle).
 set -euo pipefail
+with_test=0
+for arg in "$@"; do
+  case "$arg" in
+    --test) with_test=1 ;;
+    *) echo "usage: $0 [--test]" >&2; exit 2 ;;
+  esac
+done
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libfcl-dev libccd-dev libassimp-dev libcgal-dev libgmp-dev libmpfr-dev
@@ -8,6 +16,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
 )
+if [ "$with_test" -eq 1 ]; then
+  packages+=(libompl-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

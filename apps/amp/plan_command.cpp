@@ -23,6 +23,7 @@ struct PlanOptions {
   std::uint64_t seed = 1;
   double time_limit = 0.0;  // 0: the problem's default
   long long node_limit = 0;
+  std::string edge_check;  // empty: the problem's
   std::string out;
   std::string format = "path";
   std::string svg;
@@ -41,7 +42,8 @@ int run_plan(const PlanOptions& o) {
   if (!o.out.empty() && !o.svg.empty() && resolved(o.out) == resolved(o.svg)) {
     throw Error("--svg: '" + o.svg + "' is the --out file too; the picture would replace the path");
   }
-  const world::Problem problem = world::load_problem(o.problem);
+  world::Problem problem = world::load_problem(o.problem);
+  if (!o.edge_check.empty()) problem.defaults.edge_check = core::parse_edge_check_mode(o.edge_check);
   const std::string planner = resolve_planner(o.planner, problem);
   const double time_limit = o.time_limit > 0.0 ? o.time_limit : problem.defaults.time_limit_s;
   const std::size_t node_limit = o.node_limit > 0 ? static_cast<std::size_t>(o.node_limit) : problem.defaults.node_limit;
@@ -74,7 +76,10 @@ int run_plan(const PlanOptions& o) {
   }
   if (!solved) {
     std::cerr << "amp: no solution: " << core::to_string(run.record.status) << " (time limit " << time_limit
-              << " s, node limit " << node_limit << ")\n";
+              << " s, "
+              << (node_limit == world::kNoNodeLimit ? std::string("no node limit")
+                                                    : "node limit " + std::to_string(node_limit))
+              << ")\n";
     return kExitNotSolved;
   }
   return kExitOk;
@@ -89,10 +94,18 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--planner", o->planner, "Planner name (default: the problem's, else prm)");
   cmd->add_option("--param", o->params, "Planner parameter name=value (repeatable), e.g. --param k=15");
   cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());
-  cmd->add_option("--time-limit", o->time_limit, "Time limit in seconds (default: the problem's)")
+  cmd->add_option("--time-limit", o->time_limit,
+                  "Time limit in seconds (default: the problem's: YAML defaults.time_limit, else 30; "
+                  ".cfg: its [solver] or [benchmark] time_limit, as OMPL.app stops)")
       ->check(positive_number());
-  cmd->add_option("--node-limit", o->node_limit, "Roadmap node limit (default: the problem's)")
+  cmd->add_option("--node-limit", o->node_limit,
+                  "Roadmap node limit (default: YAML defaults.node_limit, else 20000; .cfg: none, as OMPL.app)")
       ->check(positive_integer());
+  cmd->add_option("--edge-check", o->edge_check,
+                  "Edge checks: discrete (at the space's resolution; the solution path is certified before "
+                  "it is reported) or certified (every edge certified when added) (default: the problem's "
+                  "edge_check, else discrete)")
+      ->check(CLI::IsMember({"discrete", "certified"}));
   cmd->add_option("--out", o->out, "Write the path to this file");
   cmd->add_option("--format", o->format, "Path format: path (OMPL.app .path) or yaml [path]")
       ->check(CLI::IsMember({"path", "yaml"}));

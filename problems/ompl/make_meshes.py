@@ -2,7 +2,8 @@
 """Writes the meshes of our OMPL.app-style problems (run from this directory; outputs are committed).
 
 gap_planar_env.dae  2-D world: unit-cube prisms placed and stretched by COLLADA node matrices
-                    (Z_UP, thickness 0.2): a wall across x = 0 with a 1.6-wide gap, plus two blocks.
+                    (Z_UP as SketchUp writes it: nodes pre-turned against assimp's Z_UP
+                    rotation; thickness 0.2): a wall across x = 0 with a 1.6-wide gap, plus two blocks.
 l_planar_robot.obj  2-D robot: an L of two extruded rectangles, deliberately off-centre (the loader
                     re-centres it on its vertex mean, as OMPL.app does).
 cage_env.stl        3-D world: floor, ceiling and a dividing wall with a square window, in [0, 10]^3.
@@ -50,7 +51,10 @@ def write_dae(name, boxes):
     nodes = []
     for k, (lo, hi) in enumerate(boxes):
         s = [hi[i] - lo[i] for i in range(3)]
-        m = "%g 0 0 %g 0 %g 0 %g 0 0 %g %g 0 0 0 1" % (s[0], lo[0], s[1], lo[1], s[2], lo[2])
+        # assimp (and so OMPL.app) turns a Z_UP scene by (x, y, z) -> (x, z, -y) at its root, as
+        # SketchUp's exports expect: store each node pre-turned by the inverse, (x, y, z) ->
+        # (x, -z, y), so that the prisms come out standing in z.
+        m = "%g 0 0 %g 0 0 %g %g 0 %g 0 %g 0 0 0 1" % (s[0], lo[0], -s[2], -lo[2], s[1], lo[1])
         nodes.append('      <node id="b%d"><matrix>%s</matrix><instance_geometry url="#cube"/></node>' % (k, m))
     with open(name, "w") as f:
         f.write("""<?xml version="1.0" encoding="utf-8"?>

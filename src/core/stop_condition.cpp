@@ -1,32 +1,33 @@
 #include "amp/core/stop_condition.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace amp::core {
 
 namespace {
-// Reading steady_clock costs ~20 ns; planners call check() per sample, so sample the clock sparsely.
-constexpr unsigned kClockStride = 8;
+// Longest limit honoured as given (~31 years); longer or infinite limits mean "no time limit" and
+// must not overflow the clock's representation.
+constexpr double kMaxTimeLimitSeconds = 1e9;
 }  // namespace
 
 StopCondition::StopCondition(double time_limit_s, std::size_t node_limit, const std::atomic<bool>* cancel)
     : start_(Clock::now()), time_limit_s_(time_limit_s), node_limit_(node_limit), cancel_(cancel) {
-  const double capped = std::isfinite(time_limit_s) ? std::min(time_limit_s, 1e9) : 1e9;
+  const double capped = std::isfinite(time_limit_s) ? std::clamp(time_limit_s, 0.0, kMaxTimeLimitSeconds)
+                                                    : kMaxTimeLimitSeconds;
   deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(capped));
 }
 
 StopReason StopCondition::check(std::size_t nodes) const {
-  if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed)) return StopReason::kCancelled;
+  if (cancelled()) return StopReason::kCancelled;
   if (nodes >= node_limit_) return StopReason::kNodeLimit;
-  if (timed_out_) return StopReason::kTimeLimit;
-  if (++calls_ % kClockStride == 0 || calls_ == 1) {
-    if (Clock::now() >= deadline_) {
-      timed_out_ = true;
-      return StopReason::kTimeLimit;
-    }
-  }
-  return StopReason::kNone;
+  return time_up() ? StopReason::kTimeLimit : StopReason::kNone;
+}
+
+bool StopCondition::time_up() const {
+  if (cancelled()) return true;
+  if (!timed_out_ && Clock::now() >= deadline_) timed_out_ = true;
+  return timed_out_;
 }
 
 double StopCondition::elapsed_seconds() const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "amp/core/error.hpp"
 #include "amp/roadmap/component_connection.hpp"
@@ -99,8 +100,8 @@ PlanResult CompetencePrm::plan(const PlanningContext& ctx, const core::StopCondi
   PrmParts parts;
   const CompetencePrmSettings s = settings_;
   parts.local_planner = [s, value](const PlanningContext& c) -> std::unique_ptr<LocalPlanner> {
-    return std::make_unique<CompetentLocalPlanner>(std::make_unique<GridAStarPlanner>(c.space, c.checker, s.grid),
-                                                   make_policy(s.kind, value));
+    auto astar = std::make_unique<GridAStarPlanner>(c.space, c.checker, s.grid, c.stop);
+    return std::make_unique<CompetentLocalPlanner>(std::move(astar), make_policy(s.kind, value));
   };
   parts.connection = [s](const PlanningContext& c) -> std::unique_ptr<ConnectionStrategy> {
     return std::make_unique<ComponentNearestConnection>(c.space, static_cast<std::size_t>(s.k));

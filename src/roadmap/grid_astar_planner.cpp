@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "amp/core/edge_steps.hpp"
 #include "amp/core/error.hpp"
 
 namespace amp::roadmap {
@@ -33,8 +34,13 @@ void GridAStarSettings::validate() const {
 }
 
 GridAStarPlanner::GridAStarPlanner(const core::Space& space, const world::ValidityChecker& checker,
-                                   GridAStarSettings settings)
-    : space_(&space), checker_(&checker), settings_(settings), chart_(space, settings.steps), dims_(chart_.dimension()) {
+                                   GridAStarSettings settings, const core::StopCondition* stop)
+    : space_(&space),
+      checker_(&checker),
+      poll_(stop),
+      settings_(settings),
+      chart_(space, settings.steps),
+      dims_(chart_.dimension()) {
   settings_.validate();
   if (dims_ > kMaxDims) {
     throw ParameterError("grid: at most " + std::to_string(kMaxDims) + " degrees of freedom, got " + std::to_string(dims_));
@@ -48,15 +54,23 @@ void GridAStarPlanner::set_threshold(double o_th) {
 }
 
 bool GridAStarPlanner::connect(const State& a, const State& b) {
-  const bool ok = search(a, b, threshold_);
+  bool ok = false;
+  if (poll_.fired()) {
+    last_ = GridSearchStats{};
+    chain_.clear();
+    last_.abandoned = last_.stopped = true;
+  } else {
+    ok = search(a, b, threshold_);
+  }
   checker_->counters().add_local_plan(ok);
   return ok;
 }
 
 void GridAStarPlanner::edge_waypoints(const State& a, const State& b, const EdgeRequest&, std::vector<State>& out) {
-  if (!search(a, b, std::numeric_limits<double>::infinity())) {
-    throw Error("grid A*: an accepted edge could not be searched again");
-  }
+  rechecking_ = true;
+  const bool found = search(a, b, std::numeric_limits<double>::infinity());
+  rechecking_ = false;
+  if (!found) throw Error("grid A*: an accepted edge could not be searched again");
   last_moves(moves_);
   replay(a, b, moves_, out);
 }
@@ -184,6 +198,7 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
   // b's root: the cell nearest b, which must itself be free (b is within half a step of it), as
   // must the hop between them.
   if (!cell_state(target_, target_state_)) return false;
+  if (must_stop()) return false;
   ++last_.cells_checked;
   if (!checker_->is_valid(target_state_) || !segment_free(target_state_, b)) return false;
 
@@ -193,6 +208,10 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
   for (int attempt = 0; attempt <= kMaxRepairs; ++attempt) {
     if (!grid_search(o_th)) return false;
     const std::size_t bad = first_clipping_move();
+    if (last_.stopped) {  // the move checks were cut short: no verdict on the path
+      chain_.clear();
+      return false;
+    }
     if (bad == 0) return true;
     ++last_.repairs;
     forbidden_.emplace_back(nodes_[static_cast<std::size_t>(chain_[bad - 1])].cell,
@@ -203,11 +222,19 @@ bool GridAStarPlanner::search(const State& a, const State& b, double o_th) {
   return false;
 }
 
+bool GridAStarPlanner::must_stop() {
+  if (rechecking_ || !poll_.step()) return false;
+  last_.abandoned = last_.stopped = true;
+  return true;
+}
+
 bool GridAStarPlanner::segment_free(const State& a, const State& b) {
-  const double d = space_->distance(a, b);
-  const int segments = std::max(1, static_cast<int>(std::ceil(d / space_->resolution())));
-  for (int j = 1; j < segments; ++j) {
-    space_->interpolate(a, b, static_cast<double>(j) / segments, scratch_);
+  const std::int64_t segments = core::edge_segments(space_->distance(a, b), space_->resolution());
+  if (segments == 0) return false;  // too many steps to count: refused, as a straight edge would be
+  const double n = static_cast<double>(segments);
+  for (std::int64_t j = 1; j < segments; ++j) {
+    space_->interpolate(a, b, static_cast<double>(j) / n, scratch_);
+    if (must_stop()) return false;
     ++last_.move_checks;
     if (!checker_->is_valid(scratch_)) return false;
   }
@@ -295,6 +322,7 @@ bool GridAStarPlanner::grid_search(double o_th) {
           last_.capped = true;
           return false;
         }
+        if (must_stop()) return false;
         ++last_.cells_checked;
         const bool free = checker_->is_valid(scratch_);
         const std::int32_t id = insert(Node{n, current, c.g + 1, free ? static_cast<std::int8_t>(side) : kBlocked, move});

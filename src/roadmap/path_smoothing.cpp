@@ -10,9 +10,11 @@ double path_length(const core::Space& space, const std::vector<State>& path) {
   return sum;
 }
 
-int shortcut_path(LocalPlanner& local_planner, core::Rng& rng, int attempts, std::vector<State>& path) {
+int shortcut_path(LocalPlanner& local_planner, core::Rng& rng, int attempts, std::vector<State>& path,
+                  const core::StopCondition* stop) {
   int taken = 0;
   for (int a = 0; a < attempts && path.size() >= 3; ++a) {
+    if (stop != nullptr && stop->time_up()) break;
     std::size_t i = rng.uniform_index(path.size());
     std::size_t j = rng.uniform_index(path.size());
     if (i > j) std::swap(i, j);

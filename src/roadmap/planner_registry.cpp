@@ -49,6 +49,7 @@ const PlannerRegistry& builtin_planners() {
     register_hybrid_prm(r);
     register_uas(r);
     register_competence_prms(r);
+    register_rrt_connect(r);
     return r;
   }();
   return registry;

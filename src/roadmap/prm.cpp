@@ -5,6 +5,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/roadmap/astar.hpp"
+#include "amp/roadmap/edge_certifier.hpp"
 #include "amp/roadmap/kd_tree_neighbors.hpp"
 #include "amp/roadmap/k_nearest_connection.hpp"
 #include "amp/roadmap/path_smoothing.hpp"
@@ -25,10 +26,14 @@ class PrmRun {
  public:
   PrmRun(const PrmSettings& settings, const PrmParts& parts, const PlanningContext& ctx,
          const core::StopCondition& stop)
-      : settings_(settings), ctx_(ctx), stop_(stop), roadmap_(std::make_shared<Roadmap>()) {
+      : settings_(settings),
+        ctx_(ctx),
+        stop_(stop),
+        roadmap_(std::make_shared<Roadmap>()),
+        certifier_(ctx.space, ctx.checker, &stop) {
     sampler_ = parts.sampler ? parts.sampler(ctx) : std::make_unique<UniformSampler>(ctx.space, ctx.checker);
     local_planner_ = parts.local_planner ? parts.local_planner(ctx)
-                                         : std::make_unique<StraightLinePlanner>(ctx.space, ctx.checker);
+                                         : std::make_unique<StraightLinePlanner>(ctx.space, ctx.checker, &stop);
     if (parts.connection) {
       connection_ = parts.connection(ctx);
     } else {
@@ -71,7 +76,9 @@ class PrmRun {
     result.edges = roadmap_->edge_count();
     result.components = roadmap_->component_count();
     result.extra["failed_samples"] = static_cast<double>(failed_samples_);
-    if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_);
+    if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_ - refused_edges_);
+    result.extra["certify_refused_edges"] = static_cast<double>(refused_edges_);
+    certifier_.report(result.extra);
     if (settings_.smooth) result.extra["shortcuts"] = static_cast<double>(shortcuts_);
     if (observer_) observer_->report(result.extra);
     local_planner_->report(result.extra);
@@ -94,8 +101,9 @@ class PrmRun {
       if (settings_.lazy) {
         roadmap_->add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
       } else if (local_planner_->connect_edge(q, roadmap_->state(n.index),
-                                              EdgeRequest{v, n.index, roadmap_->vertex_count()})) {
-        roadmap_->add_edge(v, n.index, n.distance);
+                                              EdgeRequest{v, n.index, roadmap_->vertex_count()}) &&
+                 (!certify_all() || certify_edge(v, n.index))) {
+        roadmap_->add_edge(v, n.index, n.distance, certify_all() ? EdgeCheck::kCertified : EdgeCheck::kValid);
       } else {
         continue;
       }
@@ -126,24 +134,48 @@ class PrmRun {
     return true;
   }
 
-  // A* through the seeds. Lazy: checks the unchecked edges of the candidate path in order and, at
-  // the first invalid one, removes it and searches again; false when the seeds fall apart.
+  bool certify_all() const { return ctx_.edge_check == core::EdgeCheckMode::kCertified; }
+
+  // Certifies the edge's whole motion: the local planner's waypoints between the two vertices and
+  // the straight segments that join them. Certification is query work when it runs on a path.
+  bool certify_edge(VertexId a, VertexId b) {
+    edge_states_.clear();
+    append_waypoints(a, b, edge_states_);
+    const State* from = &roadmap_->state(a);
+    for (const State& w : edge_states_) {
+      if (!certifier_.certify(*from, w)) return false;
+      from = &w;
+    }
+    return certifier_.certify(*from, roadmap_->state(b));
+  }
+
+  // A* through the seeds, then every edge of the candidate path is checked (Lazy PRM: its
+  // unchecked edges at the space's resolution) and certified, in order; at the first that fails it
+  // is removed and the search repeated. False when the seeds fall apart.
   bool find_path(std::vector<State>& path) {
     std::vector<VertexId> ids;
     for (;;) {
       if (!seeds_connected() || !search_all(ids)) return false;
       bool valid = true;
-      for (std::size_t i = 1; i < ids.size() && settings_.lazy; ++i) {
+      for (std::size_t i = 1; i < ids.size(); ++i) {
         const VertexId a = ids[i - 1], b = ids[i];
-        if (edge_checked(a, b)) continue;
-        if (local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
-          roadmap_->mark_valid(a, b);
+        const EdgeCheck check = roadmap_->edge_check(a, b);
+        if (check == EdgeCheck::kCertified) continue;
+        if (check == EdgeCheck::kUnchecked && !local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
+          valid = false;
         } else {
+          const core::Phase phase = ctx_.checker.counters().phase();
+          ctx_.checker.counters().set_phase(core::Phase::kQuery);
+          valid = certify_edge(a, b);
+          ctx_.checker.counters().set_phase(phase);
+          if (!valid) ++refused_edges_;
+        }
+        if (!valid) {
           roadmap_->remove_edge(a, b);
           ++removed_edges_;
-          valid = false;
           break;
         }
+        roadmap_->mark(a, b, EdgeCheck::kCertified);
       }
       if (valid) break;
       if (stop_.should_stop(roadmap_->vertex_count())) return false;  // the main loop reports why
@@ -177,13 +209,6 @@ class PrmRun {
     counters.set_phase(phase);
   }
 
-  bool edge_checked(VertexId a, VertexId b) const {
-    for (const Edge& e : roadmap_->edges(a)) {
-      if (e.to == b && e.check == EdgeCheck::kValid) return true;
-    }
-    return false;
-  }
-
   // Shortcuts each seed-to-seed leg separately so that the path still passes through every seed.
   void smooth(core::Rng& rng, std::vector<State>& path) {
     core::Counters& counters = ctx_.checker.counters();
@@ -193,7 +218,8 @@ class PrmRun {
     for (std::size_t s = 1; s < segment_starts_.size(); ++s) {
       leg.assign(path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s - 1]),
                  path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s]) + 1);
-      shortcuts_ += shortcut_path(*local_planner_, rng, settings_.smooth_attempts, leg);
+      CertifiedLocalPlanner shortcut(*local_planner_, certifier_);  // a shortcut is certified too
+      shortcuts_ += shortcut_path(shortcut, rng, settings_.smooth_attempts, leg, &stop_);
       out.insert(out.end(), leg.begin() + (out.empty() ? 0 : 1), leg.end());
     }
     if (segment_starts_.size() < 2) out = path;  // a single seed: nothing to smooth
@@ -209,14 +235,17 @@ class PrmRun {
   std::unique_ptr<LocalPlanner> local_planner_;
   std::unique_ptr<ConnectionStrategy> connection_;
   std::unique_ptr<InsertionObserver> observer_;
+  EdgeCertifier certifier_;
   AStar astar_;
   std::vector<Neighbor> neighbors_;
   std::vector<VertexId> seed_ids_;
   std::vector<VertexId> leg_;
   std::vector<State> waypoints_;
+  std::vector<State> edge_states_;
   std::vector<std::size_t> segment_starts_;
   std::uint64_t failed_samples_ = 0;
   std::uint64_t removed_edges_ = 0;
+  std::uint64_t refused_edges_ = 0;  // removed because certification failed
   int shortcuts_ = 0;
 };
 

@@ -47,13 +47,20 @@ bool Roadmap::has_edge(VertexId a, VertexId b) const {
   return std::any_of(list.begin(), list.end(), [b](const Edge& e) { return e.to == b; });
 }
 
-void Roadmap::mark_valid(VertexId a, VertexId b) {
+void Roadmap::mark(VertexId a, VertexId b, EdgeCheck check) {
   for (Edge& e : adjacency_[a]) {
-    if (e.to == b) e.check = EdgeCheck::kValid;
+    if (e.to == b) e.check = check;
   }
   for (Edge& e : adjacency_[b]) {
-    if (e.to == a) e.check = EdgeCheck::kValid;
+    if (e.to == a) e.check = check;
   }
+}
+
+EdgeCheck Roadmap::edge_check(VertexId a, VertexId b) const {
+  for (const Edge& e : adjacency_[a]) {
+    if (e.to == b) return e.check;
+  }
+  return EdgeCheck::kUnchecked;
 }
 
 void Roadmap::refresh_components() const {

@@ -1,12 +1,14 @@
 #include "amp/roadmap/straight_line_planner.hpp"
 
 #include <algorithm>
-#include <cmath>
+
+#include "amp/core/edge_steps.hpp"
 
 namespace amp::roadmap {
 
-StraightLinePlanner::StraightLinePlanner(const core::Space& space, const world::ValidityChecker& checker)
-    : space_(&space), checker_(&checker) {}
+StraightLinePlanner::StraightLinePlanner(const core::Space& space, const world::ValidityChecker& checker,
+                                         const core::StopCondition* stop)
+    : space_(&space), checker_(&checker), poll_(stop) {}
 
 const std::vector<int>& StraightLinePlanner::bisection_order(int segments) {
   if (segments == order_segments_) return order_;
@@ -27,16 +29,21 @@ const std::vector<int>& StraightLinePlanner::bisection_order(int segments) {
 }
 
 bool StraightLinePlanner::connect(const State& a, const State& b) {
-  const double d = space_->distance(a, b);
-  const int segments = std::max(1, static_cast<int>(std::ceil(d / space_->resolution())));
-  const std::vector<int>& order = bisection_order(segments);
-  const double inv = 1.0 / segments;
-  bool free = true;
-  for (const int step : order) {
-    space_->interpolate(a, b, step * inv, scratch_);
-    if (!checker_->is_valid(scratch_)) {
-      free = false;
-      break;
+  const std::int64_t segments = core::edge_segments(space_->distance(a, b), space_->resolution());
+  bool free = segments > 0 && !poll_.fired();
+  if (free) {
+    const double inv = 1.0 / static_cast<double>(segments);
+    const auto check = [&](std::int64_t step) {
+      space_->interpolate(a, b, static_cast<double>(step) * inv, scratch_);
+      free = !poll_.step() && checker_->is_valid(scratch_);
+      return free;
+    };
+    if (segments <= kMaxCachedSegments) {
+      for (const int step : bisection_order(static_cast<int>(segments))) {
+        if (!check(step)) break;
+      }
+    } else {
+      for_each_bisection_step(segments, check);
     }
   }
   checker_->counters().add_local_plan(free);

@@ -57,7 +57,7 @@ TrainingSet build_training_roadmap(const PlanningContext& ctx, const TrainingSet
   set.roadmap->reserve(wanted, 2 * static_cast<std::size_t>(settings.k));
   KdTreeNeighbors nn(ctx.space, &ctx.checker.counters());
   nn.reserve(wanted);
-  StraightLinePlanner local(ctx.space, ctx.checker);
+  StraightLinePlanner local(ctx.space, ctx.checker, &stop);  // an edge at a fine resolution stops with the training
   std::vector<Neighbor> neighbors;
   std::vector<std::size_t> tried, linked;  // per vertex, for TrainingVisibility::kAllAttempts
   tried.reserve(wanted);

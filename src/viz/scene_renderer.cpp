@@ -28,6 +28,13 @@ constexpr int kFooterPx = 44;
 void draw_shapes(SvgCanvas& c, const world::Shapes2d& shapes, const Style& s) {
   for (const auto& p : shapes.polygons) c.polygon(p.vertices, s);
   for (const auto& ci : shapes.circles) c.circle(ci.center, ci.radius, s);
+  // Segment walls have no inside: drawn as strokes in the fill colour, two pixels wide.
+  if (!shapes.segments.empty()) {
+    Style wall = s;
+    if (wall.stroke == "none") wall.stroke = wall.fill;
+    wall.stroke_width = std::max(2.0, wall.stroke_width);
+    for (const auto& seg : shapes.segments) c.line(seg.a, seg.b, wall);
+  }
 }
 
 void draw_grid(SvgCanvas& c, const world::OccupancyGrid& g) {
@@ -79,7 +86,9 @@ std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<St
   State s;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     const double d = p.space->distance(path[i], path[i + 1]);
-    const int n = std::clamp(static_cast<int>(std::ceil(d / p.space->resolution())), 1, 200);
+    // Capped as a double: the step count of a long edge at a fine resolution does not fit an int.
+    const double steps = std::ceil(d / p.space->resolution());
+    const int n = steps > 1.0 ? static_cast<int>(std::min(steps, 200.0)) : 1;
     for (int k = 0; k < n; ++k) {
       p.space->interpolate(path[i], path[i + 1], static_cast<double>(k) / n, s);
       pts.push_back(p.environment->reference_point(s).head<2>());

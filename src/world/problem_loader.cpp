@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "amp/core/edge_steps.hpp"
 #include "amp/core/error.hpp"
 #include "amp/world/grid_yaml.hpp"
 #include "amp/world/ompl_cfg.hpp"
@@ -43,7 +44,14 @@ Problem load_yaml_problem(const std::filesystem::path& file) {
   const YamlFields root(load_yaml_file(file), file, "");
   if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
   root.allow_only({"name", "description", "bounds", "resolution", "world", "robot", "start", "goal", "seeds",
-                   "defaults"});
+                   "defaults", "edge_check"});
+  // Held here, for every world type: below the floor one edge would take longer than any run, and
+  // the usual cause is an absolute step written where a fraction of the extent is expected.
+  static_assert(core::kMinResolutionFraction == 1e-9, "the message names the floor");
+  if (root.has("resolution") && root.positive("resolution") < core::kMinResolutionFraction) {
+    root.fail("resolution", "expected a fraction of the space's extent of at least 1e-9 (an edge across the "
+                            "space then takes 10^9 CD calls), got '" + root.node()["resolution"].Scalar() + "'");
+  }
   const std::string robot_type = root.child("robot").string("type");
 
   LoadedWorld loaded;
@@ -69,6 +77,13 @@ Problem load_yaml_problem(const std::filesystem::path& file) {
   } else {
     p.seeds.push_back(read_state(root.child("start"), *p.space));
     p.seeds.push_back(read_state(root.child("goal"), *p.space));
+  }
+  if (root.has("edge_check")) {
+    try {
+      p.defaults.edge_check = core::parse_edge_check_mode(root.string("edge_check"));
+    } catch (const ParameterError& e) {
+      root.fail("edge_check", e.what());
+    }
   }
   if (root.has("defaults")) {
     const YamlFields d = root.child("defaults");

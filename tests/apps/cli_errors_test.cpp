@@ -227,7 +227,7 @@ TEST_F(CliErrors, ResolutionNegative) {
 
 TEST_F(CliErrors, MeshAssimpCannotRead) {
   expect_input_error(plan(data("mesh_unreadable.yaml")),
-                     {"mesh_unreadable.yaml", "world.obstacles[0].mesh.file", "not_a_mesh.stl", "cannot read mesh"});
+                     {"mesh_unreadable.yaml", "world.obstacles[0].mesh.file", "not_a_mesh.stl", "mesh has no triangles"});
 }
 
 TEST_F(CliErrors, MissingMeshFile) {

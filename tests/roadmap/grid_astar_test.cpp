@@ -240,6 +240,8 @@ TEST(GridAStar, Se3ChartRoundTripsAndSearches) {
    private:
     bool check(const State&) const override { return true; }
     world::Clearance compute_clearance(const State&) const override { return {}; }
+    double compute_free_radius(const State&) const override { return 1e9; }
+    double compute_motion_bound(const State&, const State&) const override { return 1.0; }
   };
   core::Counters counters;
   Free free(counters);

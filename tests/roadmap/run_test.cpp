@@ -26,7 +26,10 @@ TEST(ExecuteRun, FillsTheRecord) {
   EXPECT_GT(r.cd_calls_planning, 0u);
   EXPECT_GT(r.cd_calls_query, 0u);  // smoothing
   EXPECT_EQ(r.cd_calls_training, 0u);
-  EXPECT_EQ(r.clearance_calls, 0u);  // the path clearance is measured off the books
+  // Certifying the path costs clearance calls; the path clearance is measured off the books.
+  EXPECT_GT(r.clearance_calls, 0u);
+  EXPECT_GE(r.extra.at("certified_segments"), 1.0);
+  EXPECT_EQ(r.extra.at("refused_segments"), 0.0);
   EXPECT_GT(r.lp_calls, r.lp_successes);
   EXPECT_GT(r.lp_successes, 0u);
   ASSERT_NE(o.roadmap, nullptr);

@@ -73,6 +73,18 @@ class BoxChecker final : public world::ValidityChecker {
     }
     return c;
   }
+  // The robot is its points: each must stay out of the boxes (and, for the point, in the square).
+  double compute_free_radius(const State& s) const override {
+    if (!check(s)) return 0.0;
+    double r = compute_clearance(s).distance;
+    if (kind_ == RobotKind::kPoint) r = std::min({r, s[0], s[1], 10.0 - s[0], 10.0 - s[1]});
+    return r;
+  }
+  // Joint 0 turns both links (reach 2 links), joint 1 the outer one.
+  double compute_motion_bound(const State& a, const State& b) const override {
+    if (kind_ == RobotKind::kPoint) return std::hypot(b[0] - a[0], b[1] - a[1]);
+    return 2 * kArmLink * std::abs(core::angle_difference(a[0], b[0])) + kArmLink * std::abs(b[1] - a[1]);
+  }
 
   const std::vector<Box>* boxes_;
   RobotKind kind_;

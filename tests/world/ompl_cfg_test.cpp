@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "amp/core/error.hpp"
+#include "amp/world/polygon_geometry.hpp"
 #include "amp/world/spatial_environment.hpp"
 
 namespace amp::world {
@@ -85,8 +88,10 @@ TEST_F(OmplCfg, TwoDimensionalProblemRunsOnThePlanarChecker) {
   EXPECT_EQ(p.defaults.planner, "prm");
   EXPECT_DOUBLE_EQ(p.defaults.time_limit_s, 10.0);
   EXPECT_NEAR(p.goal()[2], 1.5707963, 1e-12);
-  // Four obstacle prisms placed by node matrices: two caps' triangles each.
-  EXPECT_EQ(p.environment->obstacle_outline().shapes.polygons.size(), 8u);
+  // Four obstacle prisms placed by node matrices, as thick as the robot: per box its four sides as
+  // segment walls, and both caps' two triangles as regions (they lie in the robot's cap planes).
+  EXPECT_EQ(p.environment->obstacle_outline().shapes.polygons.size(), 16u);
+  EXPECT_EQ(p.environment->obstacle_outline().shapes.segments.size(), 16u);
   core::Counters counters;
   auto checker = p.environment->make_checker(counters);
   EXPECT_TRUE(checker->is_valid(p.start()));
@@ -98,7 +103,9 @@ TEST_F(OmplCfg, TwoDimensionalProblemRunsOnThePlanarChecker) {
   EXPECT_TRUE(checker->is_valid(s));
 }
 
-TEST_F(OmplCfg, ProjectionOfAnExtrudedPrismIsThePolygon) {
+// OMPL.app checks a 2-D problem in 3-D, surface against surface, with the robot at height 0: the
+// world is its surface within the robot's z slab, seen from above.
+TEST_F(OmplCfg, TwoDimensionalWorldIsTheSurfaceInTheRobotsSlab) {
   const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
   write_prism("pentagon.obj", pentagon, 0.5);
   write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
@@ -106,27 +113,51 @@ TEST_F(OmplCfg, ProjectionOfAnExtrudedPrismIsThePolygon) {
                                       "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
                                       "volume.max.x = 10\nvolume.max.y = 10\n");
   const Problem p = load_ompl_cfg(cfg);
-  const Shapes2d obstacles = p.environment->obstacle_outline().shapes;
-  ASSERT_EQ(obstacles.polygons.size(), 3u);  // the top cap's fan only
-  double area = 0.0;
-  for (const Polygon& t : obstacles.polygons) {
-    ASSERT_EQ(t.vertices.size(), 3u);
-    const Eigen::Vector2d a = t.vertices[1] - t.vertices[0], b = t.vertices[2] - t.vertices[0];
-    area += 0.5 * (a.x() * b.y() - a.y() * b.x());
-    for (const auto& v : t.vertices) {
-      bool is_corner = false;
-      for (const auto& c : pentagon) is_corner = is_corner || (v - c).norm() < 1e-6;
-      EXPECT_TRUE(is_corner);
+  const Shapes2d walls = p.environment->obstacle_outline().shapes;
+  // The bottom cap lies in the plane of the robot's bottom face (z = 0): its fan's 3 triangles are
+  // regions. The vertical faces lie on the sides (a face's lower triangle gives the side, its upper
+  // one, clipped at the robot's top z = 0.1, a stretch of it). The top cap (z = 0.5) is above.
+  EXPECT_EQ(walls.polygons.size(), 3u);
+  ASSERT_GE(walls.segments.size(), 5u);
+  ASSERT_LE(walls.segments.size(), 10u);
+  const auto on_pentagon = [&](const Eigen::Vector2d& v) {
+    return point_in_polygon(v, pentagon) || polygon_boundary_distance_sq(v, pentagon) < 1e-12;
+  };
+  for (const Segment& w : walls.segments) EXPECT_TRUE(on_pentagon(w.a) && on_pentagon(w.b));
+  for (std::size_t i = 0; i < pentagon.size(); ++i) {
+    const Eigen::Vector2d& a = pentagon[i];
+    const Eigen::Vector2d& b = pentagon[(i + 1) % pentagon.size()];
+    const bool found = std::any_of(walls.segments.begin(), walls.segments.end(), [&](const Segment& w) {
+      return ((w.a - a).norm() < 1e-6 && (w.b - b).norm() < 1e-6) || ((w.a - b).norm() < 1e-6 && (w.b - a).norm() < 1e-6);
+    });
+    EXPECT_TRUE(found) << "side " << i;
+  }
+  core::Counters counters;
+  auto checker = p.environment->make_checker(counters);
+  State s(3);
+  s << 4.5, 1.5, 0.0;  // across the side (4, 0)-(5, 3)
+  EXPECT_FALSE(checker->is_valid(s));
+  s << 7.0, 7.0, 0.0;  // clear of it
+  EXPECT_TRUE(checker->is_valid(s));
+  EXPECT_EQ(p.name, "p");
+}
+
+TEST_F(OmplCfg, WorldAboveTheRobotIsLeftOut) {
+  write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
+  // A slab of world from z = 2 to 3 over the whole volume: the robot (z 0..0.1) passes under it.
+  std::string obj;
+  for (double z : {2.0, 3.0}) {
+    for (const auto& [x, y] : {std::pair{-9.0, -9.0}, {9.0, -9.0}, {9.0, 9.0}, {-9.0, 9.0}}) {
+      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
     }
   }
-  double shoelace = 0.0;
-  for (std::size_t i = 0; i < pentagon.size(); ++i) {
-    const auto& a = pentagon[i];
-    const auto& b = pentagon[(i + 1) % pentagon.size()];
-    shoelace += 0.5 * (a.x() * b.y() - b.x() * a.y());
-  }
-  EXPECT_NEAR(area, shoelace, 1e-6);  // counter-clockwise triangles covering exactly the pentagon
-  EXPECT_EQ(p.name, "p");
+  obj += "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+  write("roof.obj", obj);
+  const fs::path cfg = write("roof.cfg", "[problem]\nrobot = robot.obj\nworld = roof.obj\nstart.x = -5\nstart.y = -5\n"
+                                         "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
+                                         "volume.max.x = 10\nvolume.max.y = 10\n");
+  const Problem p = load_ompl_cfg(cfg);
+  EXPECT_TRUE(p.environment->obstacle_outline().shapes.empty());
 }
 
 TEST_F(OmplCfg, ErrorsNameTheFileAndKey) {

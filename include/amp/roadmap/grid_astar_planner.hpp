@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "amp/core/space.hpp"
+#include "amp/core/stop_condition.hpp"
 #include "amp/roadmap/grid_chart.hpp"
 #include "amp/roadmap/local_planner.hpp"
 #include "amp/world/validity_checker.hpp"
@@ -28,8 +29,9 @@ struct GridSearchStats {
   std::size_t cells_checked = 0;  // validity checks (CD calls) made
   std::size_t expanded = 0;       // F: cells expanded, roots excluded
   double competence = 0.0;        // largest O(C) = F / distance travelled seen
-  bool abandoned = false;         // stopped by the threshold or max_cells, not by exhaustion
+  bool abandoned = false;         // stopped by the threshold, max_cells or the run's stop, not by exhaustion
   bool capped = false;            // of which: by max_cells
+  bool stopped = false;           // of which: by the run's stop condition (time limit or cancel)
   std::size_t path_cells = 0;     // cells on the path found (0 when none)
   std::size_t move_checks = 0;    // CD calls checking moves on the path at the space's resolution
   std::size_t repairs = 0;        // searches run again because a move clipped an obstacle
@@ -51,12 +53,18 @@ struct GridSearchStats {
 //
 // Memory and time are proportional to the cells reached: visited cells live in an open-addressing
 // hash table reset by a generation stamp, nodes and heaps in vectors kept between calls.
+//
+// `stop`, when given, is polled every core::StopPoll::kStride CD calls of connect() (cells and move
+// checks, counted across calls): once it fires the search is abandoned (stats.stopped) and the edge
+// refused, and so is every later one before its first CD call. edge_waypoints() re-searches an
+// accepted edge and is never stopped (it must find the same path).
 class GridAStarPlanner final : public LocalPlanner {
  public:
   static constexpr int kMaxDims = 12;
 
   // Throws ParameterError for bad settings or a space without a grid chart.
-  GridAStarPlanner(const core::Space& space, const world::ValidityChecker& checker, GridAStarSettings settings = {});
+  GridAStarPlanner(const core::Space& space, const world::ValidityChecker& checker, GridAStarSettings settings = {},
+                   const core::StopCondition* stop = nullptr);
 
   // O_th for the next calls; +infinity (the default) means no competence limit. Throws
   // ParameterError unless o_th > 0.
@@ -112,8 +120,14 @@ class GridAStarPlanner final : public LocalPlanner {
   void push(int side, std::int32_t node, int h);
   void trace(std::int32_t from_forward, std::int32_t from_backward);
 
+  // Called once per CD call of the current search: true (and the stats marked) when the run's stop
+  // condition says abandon it.
+  bool must_stop();
+
   const core::Space* space_;
   const world::ValidityChecker* checker_;
+  core::StopPoll poll_;      // counts CD calls across connect() calls, so short searches add up
+  bool rechecking_ = false;  // inside edge_waypoints(): not stoppable
   GridAStarSettings settings_;
   GridChart chart_;
   int dims_;

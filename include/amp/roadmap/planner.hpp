@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "amp/core/edge_check_mode.hpp"
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/core/run_record.hpp"
@@ -23,6 +24,11 @@ struct PlanningContext {
   const world::Environment& environment;
   const world::ValidityChecker& checker;
   const std::vector<State>& seeds;
+  // How edges are checked (a path reported solved is certified either way).
+  core::EdgeCheckMode edge_check = core::EdgeCheckMode::kDiscrete;
+  // The run's stop condition, for work that can be long inside one planner iteration (an edge at a
+  // very fine resolution, an A* search, a certification); null when the caller has none.
+  const core::StopCondition* stop = nullptr;
 };
 
 struct PlanResult {

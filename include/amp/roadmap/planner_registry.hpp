@@ -48,5 +48,7 @@ const PlannerRegistry& builtin_planners();
 
 // Adds `prm` (see prm.hpp) to a registry.
 void register_prm(PlannerRegistry& registry);
+// Adds `rrt-connect` (see rrt_connect.hpp) to a registry.
+void register_rrt_connect(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap

@@ -12,7 +12,9 @@ using VertexId = std::size_t;
 
 // Whether the local planner has confirmed an edge. Lazy planners add edges unchecked and validate
 // only those on a candidate path.
-enum class EdgeCheck : std::uint8_t { kUnchecked = 0, kValid = 1 };
+// kValid: checked at the space's resolution; kCertified: proven free along its whole length
+// (EdgeCertifier).
+enum class EdgeCheck : std::uint8_t { kUnchecked = 0, kValid = 1, kCertified = 2 };
 
 // One direction of an undirected edge, stored in the adjacency list of its source.
 struct Edge {
@@ -38,7 +40,10 @@ class Roadmap {
   bool remove_edge(VertexId a, VertexId b);
   bool has_edge(VertexId a, VertexId b) const;
   // Marks both directions of a-b (which must exist) as checked.
-  void mark_valid(VertexId a, VertexId b);
+  void mark_valid(VertexId a, VertexId b) { mark(a, b, EdgeCheck::kValid); }
+  void mark(VertexId a, VertexId b, EdgeCheck check);
+  // How a-b was checked (kUnchecked when there is no such edge).
+  EdgeCheck edge_check(VertexId a, VertexId b) const;
 
   const State& state(VertexId v) const { return states_[v]; }
   const std::vector<State>& states() const { return states_; }

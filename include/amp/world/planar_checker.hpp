@@ -13,6 +13,12 @@
 
 namespace amp::world {
 
+// How a planar robot must stay inside the world bounds.
+enum class PlanarBoundsCheck {
+  kWholeRobot,      // every robot shape inside the closed box: our YAML problems
+  kReferencePoint,  // only the reference point: OMPL.app's rule for its .cfg problems
+};
+
 // Exact validity checker for a planar robot in a PlanarWorld. Per robot shape: grid cells under
 // its bounding box give candidate edges and circles; an edge whose line leaves every robot vertex
 // on one side is rejected before any segment test; containment either way is settled by one point
@@ -21,7 +27,8 @@ namespace amp::world {
 // non-adjacent links against each other. Scratch is sized in the constructor: checks never allocate.
 class PlanarChecker final : public ValidityChecker {
  public:
-  PlanarChecker(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot, core::Counters& counters);
+  PlanarChecker(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot, core::Counters& counters,
+                PlanarBoundsCheck bounds_check = PlanarBoundsCheck::kWholeRobot);
 
   const PlanarWorld& world() const { return *world_; }
   const PlanarRobot& robot() const { return robot_; }
@@ -46,6 +53,16 @@ class PlanarChecker final : public ValidityChecker {
   // Exact distance to the nearest obstacle shape (bounds are not obstacles); 0 when s is not valid;
   // +infinity in a world without obstacles.
   Clearance compute_clearance(const State& s) const override;
+  // min(obstacle distance, distance to leave the bounds, half the distance between non-adjacent
+  // links); planar_certification.cpp.
+  double compute_free_radius(const State& s) const override;
+  // |dxy| + reach * |dtheta| for rigid bodies; per joint, its angle change times the reach of the
+  // links it turns, for arms and linkages.
+  double compute_motion_bound(const State& a, const State& b) const override;
+  double bounds_margin() const;
+  // The reference point of the robot as place() last put it.
+  Eigen::Vector2d reference_point_placed() const;
+  double self_distance() const;
 
   // Places every robot shape in the world frame (placed_, circle_centers_, boxes). False for a
   // non-finite state.
@@ -65,6 +82,9 @@ class PlanarChecker final : public ValidityChecker {
 
   std::shared_ptr<const PlanarWorld> world_;
   PlanarRobot robot_;
+  PlanarBoundsCheck bounds_check_;
+  // joint_reach_[j]: the farthest any point of links j, j+1, ... lies from joint j (link j's origin).
+  std::vector<double> joint_reach_;
   std::vector<BodyPolygon> polygons_;
   std::vector<Eigen::Vector2d> local_;
   std::vector<BodyCircle> circles_;

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "amp/world/environment.hpp"
+#include "amp/world/planar_checker.hpp"
 #include "amp/world/planar_robot.hpp"
 #include "amp/world/planar_world.hpp"
 
@@ -11,7 +12,9 @@ namespace amp::world {
 class PlanarEnvironment final : public Environment {
  public:
   // Throws ParameterError for a null world.
-  PlanarEnvironment(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot);
+  PlanarEnvironment(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot,
+                    PlanarBoundsCheck bounds_check = PlanarBoundsCheck::kWholeRobot);
+  PlanarBoundsCheck bounds_check() const { return bounds_check_; }
 
   const PlanarWorld& world() const { return *world_; }
   const PlanarRobot& robot() const { return robot_; }
@@ -29,6 +32,7 @@ class PlanarEnvironment final : public Environment {
  private:
   std::shared_ptr<const PlanarWorld> world_;
   PlanarRobot robot_;
+  PlanarBoundsCheck bounds_check_;
 };
 
 }  // namespace amp::world

@@ -86,6 +86,8 @@ class PlanarWorld {
   const Eigen::AlignedBox2d& bounds() const { return bounds_; }
 
   const std::vector<PlanarEdge>& edges() const { return edges_; }
+  // edges()[first_segment_edge() ..] are the segment walls (PlanarEdge::polygon = -1).
+  int first_segment_edge() const { return first_segment_edge_; }
   const std::vector<Eigen::AlignedBox2d>& polygon_boxes() const { return polygon_boxes_; }
   const std::vector<Eigen::AlignedBox2d>& circle_boxes() const { return circle_boxes_; }
   const PlanarGrid& grid() const { return grid_; }
@@ -98,6 +100,7 @@ class PlanarWorld {
   Shapes2d obstacles_;
   Eigen::AlignedBox2d bounds_;
   std::vector<PlanarEdge> edges_;
+  int first_segment_edge_ = 0;
   std::vector<Eigen::AlignedBox2d> polygon_boxes_;
   std::vector<Eigen::AlignedBox2d> circle_boxes_;
   PlanarGrid grid_;

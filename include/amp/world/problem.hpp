@@ -6,10 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "amp/core/edge_check_mode.hpp"
 #include "amp/core/space.hpp"
 #include "amp/world/environment.hpp"
 
 namespace amp::world {
+
+// A node limit that never stops a run (OMPL.app's .cfg problems stop on time only).
+inline constexpr std::size_t kNoNodeLimit = static_cast<std::size_t>(-1);
 
 // Planner defaults a problem file may carry (`defaults:`); command-line options override them.
 struct ProblemDefaults {
@@ -19,6 +23,8 @@ struct ProblemDefaults {
   // Planner parameters this problem needs (e.g. the A* grid's `steps: 512` for the 6-DOF puzzle),
   // as written; they apply to every planner that declares them, unless the run sets them itself.
   std::map<std::string, std::string> params;
+  // How planners check roadmap edges (`edge_check:`); solved paths are certified either way.
+  core::EdgeCheckMode edge_check = core::EdgeCheckMode::kDiscrete;
 };
 
 // A loaded planning problem: space, world + robot, and the configurations to connect.

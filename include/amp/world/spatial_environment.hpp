@@ -31,14 +31,25 @@ class SpatialChecker final : public ValidityChecker {
 
   bool check(const State& s) const override;
   Clearance compute_clearance(const State& s) const override;
+  // min(FCL distance to the world, distance to leave the bounds, half the distance between
+  // non-adjacent links); spatial_certification.cpp.
+  double compute_free_radius(const State& s) const override;
+  // Rigid: |dp| + R * (rotation angle), R bounding every point's (and every part box corner's)
+  // distance from the body origin. SCARA: per joint, its change times the reach it turns.
+  double compute_motion_bound(const State& a, const State& b) const override;
+  double bounds_margin(const State& s) const;
   // Places the robot's objects at state s.
   void place(const State& s) const;
   bool inside_bounds(const State& s) const;
+  // World-frame box of part i as placed (exact for boxes, spheres and cylinders; a mesh's rotated
+  // local box).
+  Eigen::AlignedBox3d part_box(std::size_t i) const;
 
   std::shared_ptr<const SpatialWorld> world_;
   SpatialRobot robot_;
   SpatialBoundsCheck bounds_check_;
   std::unique_ptr<Scratch> scratch_;
+  double motion_radius_ = 0.0;  // rigid and sphere robots: see compute_motion_bound
 };
 
 // A SpatialWorld with a SpatialRobot in it.

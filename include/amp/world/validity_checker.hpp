@@ -37,11 +37,25 @@ class ValidityChecker {
     return compute_clearance(s);
   }
 
+  // Edge certification (roadmap::EdgeCertifier). A distance r such that every placement of the
+  // robot in which no robot point is more than r from where it is at s is valid: obstacles,
+  // workspace bounds and self-collision (which needs half the distance between two links, as
+  // both may move). 0 when s is not valid. Counts one clearance call (not a CD call).
+  double free_radius(const State& s) const {
+    counters_->add_clearance_call();
+    return compute_free_radius(s);
+  }
+  // An upper bound on the distance any robot point travels while the state follows the space's
+  // interpolation from a to b (t from 0 to 1). Pure geometry: counts nothing.
+  double motion_bound(const State& a, const State& b) const { return compute_motion_bound(a, b); }
+
   core::Counters& counters() const { return *counters_; }
 
  private:
   virtual bool check(const State& s) const = 0;
   virtual Clearance compute_clearance(const State& s) const = 0;
+  virtual double compute_free_radius(const State& s) const = 0;
+  virtual double compute_motion_bound(const State& a, const State& b) const = 0;
 
   core::Counters* counters_;
 };

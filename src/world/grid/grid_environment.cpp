@@ -6,6 +6,7 @@
 #include <string>
 
 #include "amp/core/error.hpp"
+#include "amp/core/joint_space.hpp"
 
 namespace amp::world {
 
@@ -50,6 +51,12 @@ class DiscChecker final : public ValidityChecker {
     return {std::max(0.0, d - radius_), {rp.x(), rp.y(), 0.0}, {q.x(), q.y(), 0.0}};
   }
 
+  // The EDT distances are exact to the blocked squares and the map's outside.
+  double compute_free_radius(const State& s) const override { return check(s) ? compute_clearance(s).distance : 0.0; }
+  double compute_motion_bound(const State& a, const State& b) const override {
+    return std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+
   const GridObstacles& obstacles_;
   double radius_;
 };
@@ -62,6 +69,10 @@ class RigidChecker final : public ValidityChecker {
     std::size_t most = 0;
     for (const auto& poly : body_.polygons) most = std::max(most, poly.vertices.size());
     scratch_.resize(most);
+    for (const auto& poly : body_.polygons) {
+      for (const auto& v : poly.vertices) reach_ = std::max(reach_, v.norm());
+    }
+    for (const auto& circle : body_.circles) reach_ = std::max(reach_, circle.center.norm() + circle.radius);
   }
 
  private:
@@ -107,8 +118,15 @@ class RigidChecker final : public ValidityChecker {
     return best;
   }
 
+  double compute_free_radius(const State& s) const override { return check(s) ? compute_clearance(s).distance : 0.0; }
+  // State (x, y, theta), theta continuous (the short way round, as JointSpace interpolates it).
+  double compute_motion_bound(const State& a, const State& b) const override {
+    return std::hypot(b[0] - a[0], b[1] - a[1]) + reach_ * std::abs(core::angle_difference(a[2], b[2]));
+  }
+
   const GridObstacles& obstacles_;
   const Shapes2d& body_;
+  double reach_ = 0.0;  // farthest body point from the reference point
   mutable std::vector<Eigen::Vector2d> scratch_;
 };
 

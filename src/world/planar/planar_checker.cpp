@@ -9,8 +9,9 @@
 
 namespace amp::world {
 
-PlanarChecker::PlanarChecker(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot, core::Counters& counters)
-    : ValidityChecker(counters), world_(std::move(world)), robot_(std::move(robot)) {
+PlanarChecker::PlanarChecker(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot, core::Counters& counters,
+                             PlanarBoundsCheck bounds_check)
+    : ValidityChecker(counters), world_(std::move(world)), robot_(std::move(robot)), bounds_check_(bounds_check) {
   if (!world_) throw ParameterError("PlanarChecker: no world");
   // Flatten the robot's shapes, link by link, so that a check walks contiguous arrays.
   for (int l = 0; l < robot_.link_count(); ++l) {
@@ -41,6 +42,21 @@ PlanarChecker::PlanarChecker(std::shared_ptr<const PlanarWorld> world, PlanarRob
   polygon_stamp_.assign(world_->obstacles().polygons.size(), 0);
   circle_stamp_.assign(world_->obstacles().circles.size(), 0);
   parity_scratch_.reserve(world_->grid().max_parity_items());
+  // Reach of each link's shapes from its own origin, then accumulated from the tip inwards.
+  const int n = robot_.link_count();
+  std::vector<double> own(n, 0.0);
+  for (int l = 0; l < n; ++l) {
+    for (const Polygon& p : robot_.links()[l].polygons) {
+      for (const Eigen::Vector2d& v : p.vertices) own[l] = std::max(own[l], v.norm());
+    }
+    for (const Circle& c : robot_.links()[l].circles) own[l] = std::max(own[l], c.center.norm() + c.radius);
+  }
+  joint_reach_.assign(n, 0.0);
+  const auto& specs = robot_.link_specs();
+  for (int j = n - 1; j >= 0; --j) {
+    const double length = j < static_cast<int>(specs.size()) ? specs[j].length : 0.0;
+    joint_reach_[j] = std::max(own[j], j + 1 < n ? length + joint_reach_[j + 1] : 0.0);
+  }
 }
 
 std::uint32_t PlanarChecker::next_stamp() const {
@@ -90,6 +106,9 @@ bool PlanarChecker::place(const State& s) const {
 
 bool PlanarChecker::inside_bounds() const {
   const Eigen::AlignedBox2d& bounds = world_->bounds();
+  if (bounds_check_ == PlanarBoundsCheck::kReferencePoint) {
+    return bounds.contains(reference_point_placed());
+  }
   for (const auto& b : link_boxes_) {
     if (!bounds.contains(b)) return false;
   }
@@ -156,6 +175,7 @@ bool PlanarChecker::polygon_hits_obstacles(int k) const {
         }
         // An obstacle wholly inside the robot has no edge crossing: test one of its vertices.
         const int p = e.polygon;
+        if (p < 0) return box.contains(e.a) && point_in_polygon(e.a, v);  // a segment wall
         if (polygon_stamp_[p] != st) {
           polygon_stamp_[p] = st;
           if (box.contains(world_->polygon_boxes()[p]) && point_in_polygon(e.a, v)) return true;

@@ -61,6 +61,18 @@ void PlanarChecker::nearest_to_polygon(int k, double& best_sq, Clearance& out) c
       }
     }
   }
+  for (int id = world_->first_segment_edge(); id < static_cast<int>(edges.size()); ++id) {
+    const PlanarEdge& e = edges[id];
+    if (box.squaredExteriorDistance(e.box) >= best_sq) continue;
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+      const double d = segment_segment_distance_sq(v[j], v[i], e.a, e.b, &on_robot, &on_obstacle);
+      if (d < best_sq) {
+        best_sq = d;
+        out.robot_point = lift(on_robot);
+        out.obstacle_point = lift(on_obstacle);
+      }
+    }
+  }
   for (std::size_t c = 0; c < obstacles.circles.size(); ++c) {
     const Circle& o = obstacles.circles[c];
     const double lower = std::max(0.0, std::sqrt(box.squaredExteriorDistance(o.center)) - o.radius);
@@ -93,6 +105,15 @@ void PlanarChecker::nearest_to_circle(int k, double& best, Clearance& out) const
         out.robot_point = lift(towards(c, r, q));
         out.obstacle_point = lift(q);
       }
+    }
+  }
+  for (int id = world_->first_segment_edge(); id < static_cast<int>(edges.size()); ++id) {
+    const PlanarEdge& e = edges[id];
+    const double d = std::sqrt(point_segment_distance_sq(c, e.a, e.b, &q)) - r;
+    if (d < best) {
+      best = std::max(0.0, d);
+      out.robot_point = lift(towards(c, r, q));
+      out.obstacle_point = lift(q);
     }
   }
   for (const Circle& o : obstacles.circles) {

@@ -5,13 +5,14 @@
 
 namespace amp::world {
 
-PlanarEnvironment::PlanarEnvironment(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot)
-    : world_(std::move(world)), robot_(std::move(robot)) {
+PlanarEnvironment::PlanarEnvironment(std::shared_ptr<const PlanarWorld> world, PlanarRobot robot,
+                                     PlanarBoundsCheck bounds_check)
+    : world_(std::move(world)), robot_(std::move(robot)), bounds_check_(bounds_check) {
   if (!world_) throw ParameterError("PlanarEnvironment: no world");
 }
 
 std::unique_ptr<ValidityChecker> PlanarEnvironment::make_checker(core::Counters& counters) const {
-  return std::make_unique<PlanarChecker>(world_, robot_, counters);
+  return std::make_unique<PlanarChecker>(world_, robot_, counters, bounds_check_);
 }
 
 Eigen::AlignedBox3d PlanarEnvironment::workspace_bounds() const {

@@ -50,6 +50,7 @@ PlanarGrid::PlanarGrid(const std::vector<PlanarEdge>& edges, const Shapes2d& obs
   const int items = static_cast<int>(edges.size() + circle_boxes.size());
   if (items == 0) return;
   for (const auto& b : polygon_boxes) extent_.extend(b);
+  for (const auto& e : edges) extent_.extend(e.box);  // segment walls belong to no polygon
   for (const auto& b : circle_boxes) extent_.extend(b);
   const Eigen::Vector2d size = extent_.sizes();
   const double pad = 1e-9 * std::max(size.x(), size.y());

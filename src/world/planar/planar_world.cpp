@@ -89,6 +89,17 @@ PlanarWorld::PlanarWorld(Shapes2d obstacles, Eigen::AlignedBox2d bounds)
       edges_.push_back(e);
     }
   }
+  // Segment walls join the edge list with no polygon (-1): they block, but enclose nothing.
+  first_segment_edge_ = static_cast<int>(edges_.size());
+  for (const Segment& s : obstacles_.segments) {
+    if (!s.a.allFinite() || !s.b.allFinite()) throw ParameterError("obstacle segment: coordinates must be finite");
+    PlanarEdge e;
+    e.a = s.a;
+    e.b = s.b;
+    e.box = Eigen::AlignedBox2d(s.a.cwiseMin(s.b), s.a.cwiseMax(s.b));
+    e.polygon = -1;
+    edges_.push_back(e);
+  }
   circle_boxes_.reserve(obstacles_.circles.size());
   for (const Circle& c : obstacles_.circles) {
     const Eigen::Vector2d r = Eigen::Vector2d::Constant(c.radius);
@@ -105,6 +116,7 @@ bool PlanarWorld::point_in_obstacle_polygon(const Eigen::Vector2d& p, std::vecto
   for (int id : grid_.polygons_around(cell)) scratch.push_back(id);
   for (int id : grid_.edges_in(cell)) {
     const PlanarEdge& e = edges_[id];
+    if (e.polygon < 0) continue;  // a segment wall encloses nothing
     // Half-open rule on both lines: a vertex exactly on a line counts on the positive side, so a
     // crossing through a shared vertex is counted once.
     if ((orient2d(r, p, e.a) > 0.0) == (orient2d(r, p, e.b) > 0.0)) continue;

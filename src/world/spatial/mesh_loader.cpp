@@ -1,11 +1,11 @@
 #include "amp/world/mesh_loader.hpp"
 
 #include <cctype>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
 #include <assimp/Importer.hpp>
-#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -38,6 +38,8 @@ bool file_is_y_up(const aiScene& scene, const std::filesystem::path& file) {
   return ext == ".dae" && collada_declares_y_up(file);
 }
 
+// Every vertex of every mesh the node tree instances (points and lines included, as OMPL.app's
+// scene centre counts them), with the triangles among the faces.
 void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, TriangleMesh& out) {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
@@ -47,9 +49,12 @@ void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
       const aiVector3D p = transform * mesh.mVertices[v];
       out.vertices.emplace_back(p.x, p.y, p.z);
     }
+    if (mesh.mNumVertices > static_cast<unsigned>(std::numeric_limits<int>::max() - base)) {
+      throw FileError("mesh has more vertices than a mesh index can address");
+    }
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines left by SortByPType
+      if (face.mNumIndices != 3) continue;  // points and lines: no surface
       out.triangles.emplace_back(base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
                                  base + static_cast<int>(face.mIndices[2]));
     }
@@ -66,17 +71,21 @@ UpAxis parse_up_axis(const std::string& text) {
 }
 
 TriangleMesh load_mesh(const std::filesystem::path& file, UpAxis up) {
+  // assimp's own importer settings, as OMPL.app reads meshes: a COLLADA file's <up_axis> is applied
+  // by assimp (with 5.2 a Z_UP file comes back in its own Z-up frame, a Y_UP file unrotated), and
+  // every node transform down from the root. Primitives are not filtered, so that the vertex mean
+  // is OMPL.app's.
   Assimp::Importer importer;
-  // We convert the up axis ourselves, after the node transforms, so that all formats agree.
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr) {
     throw FileError(file.string() + ": cannot read mesh: " + importer.GetErrorString());
   }
   TriangleMesh mesh;
-  collect(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
+  try {
+    collect(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
+  } catch (const FileError& e) {
+    throw FileError(file.string() + ": " + e.what());
+  }
   if (mesh.triangles.empty()) throw FileError(file.string() + ": mesh has no triangles");
 
   const bool y_up = up == UpAxis::kY || (up == UpAxis::kAuto && file_is_y_up(*scene, file));

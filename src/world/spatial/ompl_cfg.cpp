@@ -81,7 +81,7 @@ class CfgFile {
   TriangleMesh mesh(const std::string& key) const {
     const std::filesystem::path path = mesh_path(key);
     try {
-      return load_mesh(path);
+      return load_mesh(path, UpAxis::kZ);  // as assimp reads it: OMPL.app converts nothing
     } catch (const Error& e) {
       fail("problem", key, e.what());
     }
@@ -129,8 +129,11 @@ Eigen::AlignedBox3d volume(const CfgFile& cfg, const TriangleMesh& world, int di
   return box;
 }
 
-void recentre(TriangleMesh& robot) {
-  const Eigen::Vector3d mean = vertex_mean(robot);
+// OMPL.app's robot frame is the mean of all the robot file's vertices; a 2-D problem's robot stays
+// at its own height (the plane z = 0 holds the frame, not the body's middle).
+void recentre(TriangleMesh& robot, bool planar) {
+  Eigen::Vector3d mean = vertex_mean(robot);
+  if (planar) mean.z() = 0.0;
   for (Eigen::Vector3d& v : robot.vertices) v -= mean;
 }
 
@@ -160,16 +163,22 @@ State se2_state(const CfgFile& cfg, const std::string& which) {
   return s;
 }
 
+// OMPL.app moves the robot in the plane z = 0 (SE2 at height 0) and checks it in 3-D, surface
+// against surface; the robot's body sweeps the slab of its own z range, so the world's surface
+// within that slab, seen from above, is what it can touch, and the robot's shadow is what touches
+// it (exact for the vertical prisms of OMPL.app's planar problems).
 void load_2d(const CfgFile& cfg, const TriangleMesh& robot_mesh, const TriangleMesh& world_mesh, Problem& problem) {
   const Eigen::AlignedBox3d box = volume(cfg, world_mesh, 2);
+  const Eigen::AlignedBox3d robot_box = mesh_bounds(robot_mesh);
   Shapes2d obstacles, body;
-  detail::project_triangles(world_mesh, Eigen::Isometry3d::Identity(), obstacles);
+  detail::project_slab_surface(world_mesh, robot_box.min().z(), robot_box.max().z(), obstacles);
   detail::project_triangles(robot_mesh, Eigen::Isometry3d::Identity(), body);
   if (body.polygons.empty()) cfg.fail("problem", "robot", "mesh has no triangle of non-zero area in the plane");
   const Eigen::AlignedBox2d bounds(box.min().head<2>(), box.max().head<2>());
   try {
     auto world = std::make_shared<const PlanarWorld>(std::move(obstacles), bounds);
-    problem.environment = std::make_shared<PlanarEnvironment>(world, PlanarRobot::rigid(std::move(body)));
+    problem.environment = std::make_shared<PlanarEnvironment>(world, PlanarRobot::rigid(std::move(body)),
+                                                              PlanarBoundsCheck::kReferencePoint);
   } catch (const ParameterError& e) {
     cfg.fail("problem", "world", e.what());
   }
@@ -188,9 +197,11 @@ Problem load_ompl_cfg(const std::filesystem::path& file) {
   problem.name = cfg.has("problem", "name") ? cfg.text("problem", "name") : file.stem().string();
   TriangleMesh robot_mesh = cfg.mesh("robot");
   const TriangleMesh world_mesh = cfg.mesh("world");
-  recentre(robot_mesh);
   for (const char* key : {"start.x", "start.y", "goal.x", "goal.y"}) cfg.text("problem", key);  // required
-  if (cfg.has("problem", "start.z")) {
+  // 3-D when the start has a height or a rotation axis, as OMPL.app's own problems are written.
+  const bool spatial = cfg.has("problem", "start.z") || cfg.has("problem", "start.axis.x");
+  recentre(robot_mesh, !spatial);
+  if (spatial) {
     load_3d(cfg, std::move(robot_mesh), world_mesh, problem);
   } else {
     load_2d(cfg, robot_mesh, world_mesh, problem);
@@ -200,6 +211,7 @@ Problem load_ompl_cfg(const std::filesystem::path& file) {
                                                         : cfg.number("benchmark", "time_limit", problem.defaults.time_limit_s);
   if (!(limit > 0.0)) cfg.fail(cfg.has("solver", "time_limit") ? "solver" : "benchmark", "time_limit", "must be positive");
   problem.defaults.time_limit_s = limit;
+  problem.defaults.node_limit = kNoNodeLimit;  // OMPL.app stops on its time limit only
   return problem;
 }
 

@@ -1,6 +1,8 @@
 #include "world/spatial/projection.hpp"
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 
 namespace amp::world::detail {
@@ -68,6 +70,65 @@ void project_triangles(const TriangleMesh& mesh, const Eigen::Isometry3d& pose, 
     poly.vertices = {v[t[0]], v[t[1]], v[t[2]]};
     if (a < 0.0) std::swap(poly.vertices[1], poly.vertices[2]);
     out.polygons.push_back(std::move(poly));
+  }
+}
+
+namespace {
+// Sutherland-Hodgman against one plane: keeps the points with sign * (z - level) >= 0.
+void clip_z(std::vector<Eigen::Vector3d>& poly, double level, double sign, std::vector<Eigen::Vector3d>& scratch) {
+  scratch.clear();
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Vector3d& a = poly[i];
+    const Eigen::Vector3d& b = poly[(i + 1) % poly.size()];
+    const double da = sign * (a.z() - level), db = sign * (b.z() - level);
+    if (da >= 0.0) scratch.push_back(a);
+    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) {
+      Eigen::Vector3d c = a + (da / (da - db)) * (b - a);
+      c.z() = level;
+      scratch.push_back(c);
+    }
+  }
+  poly.swap(scratch);
+}
+
+bool before(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); }
+}  // namespace
+
+void project_slab_surface(const TriangleMesh& mesh, double z0, double z1, Shapes2d& out) {
+  std::set<std::array<double, 4>> seen;  // segments already kept, endpoints ordered
+  const auto keep = [&](Eigen::Vector2d a, Eigen::Vector2d b) {
+    if (a == b) return;
+    if (before(b, a)) std::swap(a, b);
+    if (seen.insert({a.x(), a.y(), b.x(), b.y()}).second) out.segments.push_back({a, b});
+  };
+  std::vector<Eigen::Vector3d> poly, scratch;
+  std::vector<Eigen::Vector2d> flat;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    poly = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+    // A flat triangle in the plane of the robot's bottom or top face overlaps that face wherever
+    // their shadows meet (FCL reports coplanar overlap as contact): it blocks as a region.
+    const double z = poly[0].z();
+    const bool in_cap_plane = poly[1].z() == z && poly[2].z() == z && (z == z0 || z == z1);
+    clip_z(poly, z0, 1.0, scratch);
+    if (!poly.empty()) clip_z(poly, z1, -1.0, scratch);
+    if (poly.empty()) continue;
+    flat.clear();
+    for (const Eigen::Vector3d& q : poly) flat.push_back(q.head<2>());
+    double area = 0.0;
+    for (std::size_t i = 1; i + 1 < flat.size(); ++i) area += cross(flat[0], flat[i], flat[i + 1]);
+    const double scale = (flat.front() - flat.back()).squaredNorm() + 1.0;
+    if (std::abs(area) > kDegenerateArea * scale && in_cap_plane) {
+      Polygon region;
+      region.vertices = flat;
+      if (area < 0.0) std::reverse(region.vertices.begin(), region.vertices.end());
+      out.polygons.push_back(std::move(region));
+    } else if (std::abs(area) > kDegenerateArea * scale) {
+      for (std::size_t i = 0; i < flat.size(); ++i) keep(flat[i], flat[(i + 1) % flat.size()]);
+    } else {
+      // Edge-on (a vertical wall): its shadow is the segment between its extreme points.
+      const auto [lo, hi] = std::minmax_element(flat.begin(), flat.end(), before);
+      keep(*lo, *hi);
+    }
   }
 }
 

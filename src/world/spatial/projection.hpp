@@ -18,6 +18,15 @@ Polygon convex_hull_xy(const std::vector<Eigen::Vector3d>& points);
 // otherwise every non-degenerate triangle is kept.
 void project_triangles(const TriangleMesh& mesh, const Eigen::Isometry3d& pose, Shapes2d& out);
 
+// The surface of `mesh` inside the closed slab z0 <= z <= z1, seen from above, as segment walls:
+// each triangle is clipped to the slab; an edge-on one (a vertical face) leaves the segment it
+// stands on, any other its outline, except a flat one in the plane of the robot's bottom or top
+// face (z = z0 or z1), which overlaps that face wherever their shadows meet: it becomes a polygon. A 2-D OMPL.app problem's robot is a prism sweeping exactly
+// that slab, and FCL tests surface against surface, so the robot touches the world's surface in 3-D
+// when its shadow meets these walls: solids enclose nothing (a robot wholly inside one is free, as
+// in OMPL.app), and what lies above or below the robot is left out. Shared edges are kept once.
+void project_slab_surface(const TriangleMesh& mesh, double z0, double z1, Shapes2d& out);
+
 // Top view of a solid placed by parent * solid.pose: spheres and vertical cylinders as circles,
 // meshes as triangles (mesh_triangles) or one convex hull, the rest as convex hulls.
 void project_solid(const Solid& solid, const Eigen::Isometry3d& parent, bool mesh_triangles, Shapes2d& out);

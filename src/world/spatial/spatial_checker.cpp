@@ -105,6 +105,15 @@ SpatialChecker::SpatialChecker(std::shared_ptr<const SpatialWorld> world, Spatia
       b.half = 0.5 * box.sizes();
     }
     scratch_->bounds.push_back(b);
+    // Every point the bounds test or FCL looks at: hull points, and the local box of a mesh.
+    for (const Eigen::Vector3d& p : s.hull_points()) motion_radius_ = std::max(motion_radius_, p.norm());
+    if (s.kind == Solid::Kind::kSphere) motion_radius_ = std::max(motion_radius_, s.pose.translation().norm() + s.radius);
+    if (s.kind == Solid::Kind::kMesh) {
+      const Eigen::AlignedBox3d box = mesh_bounds(*s.mesh);
+      for (int c = 0; c < 8; ++c) {
+        motion_radius_ = std::max(motion_radius_, (s.pose * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))).norm());
+      }
+    }
   }
   for (const auto& [la, lb] : robot_.self_pairs()) {
     for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -136,28 +145,33 @@ bool SpatialChecker::inside_bounds(const State& s) const {
     }
     return box.contains(s.head<3>());
   }
-  const Scratch& w = *scratch_;
-  for (std::size_t i = 0; i < w.objects.size(); ++i) {
-    const fcl::Transform3d& t = w.objects[i]->getTransform();
-    const PartBounds& b = w.bounds[i];
-    const Eigen::Vector3d c = t * b.center;
-    Eigen::Vector3d half;
-    switch (b.kind) {
-      case Solid::Kind::kSphere:
-        half.setConstant(b.radius);
-        break;
-      case Solid::Kind::kCylinder:
-        for (int k = 0; k < 3; ++k) {
-          const double a = t.linear()(k, 2);
-          half[k] = b.half_length * std::abs(a) + b.radius * std::sqrt(std::max(0.0, 1.0 - a * a));
-        }
-        break;
-      default:
-        half = t.linear().cwiseAbs() * b.half;
-    }
-    if (((c - half).array() < box.min().array()).any() || ((c + half).array() > box.max().array()).any()) return false;
+  for (std::size_t i = 0; i < scratch_->objects.size(); ++i) {
+    const Eigen::AlignedBox3d b = part_box(i);
+    if ((b.min().array() < box.min().array()).any() || (b.max().array() > box.max().array()).any()) return false;
   }
   return true;
+}
+
+Eigen::AlignedBox3d SpatialChecker::part_box(std::size_t i) const {
+  const Scratch& w = *scratch_;
+  const fcl::Transform3d& t = w.objects[i]->getTransform();
+  const PartBounds& b = w.bounds[i];
+  const Eigen::Vector3d c = t * b.center;
+  Eigen::Vector3d half;
+  switch (b.kind) {
+    case Solid::Kind::kSphere:
+      half.setConstant(b.radius);
+      break;
+    case Solid::Kind::kCylinder:
+      for (int k = 0; k < 3; ++k) {
+        const double a = t.linear()(k, 2);
+        half[k] = b.half_length * std::abs(a) + b.radius * std::sqrt(std::max(0.0, 1.0 - a * a));
+      }
+      break;
+    default:
+      half = t.linear().cwiseAbs() * b.half;
+  }
+  return {c - half, c + half};
 }
 
 bool SpatialChecker::check(const State& s) const {
@@ -194,6 +208,70 @@ Clearance SpatialChecker::compute_clearance(const State& s) const {
   best.robot_point = d.robot_point;
   best.obstacle_point = d.obstacle_point;
   return best;
+}
+
+double SpatialChecker::bounds_margin(const State& s) const {
+  const Eigen::AlignedBox3d& box = world_->bounds();
+  const auto margin = [&box](const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+    return std::max(0.0, std::min((lo - box.min()).minCoeff(), (box.max() - hi).minCoeff()));
+  };
+  const Scratch& w = *scratch_;
+  if (bounds_check_ == SpatialBoundsCheck::kReferencePoint) {
+    const Eigen::Vector3d p = robot_.kind() == SpatialRobot::Kind::kScara
+                                  ? Eigen::Vector3d(w.poses[SpatialRobot::kMaxLinks - 1] * robot_.scara_params().tip)
+                                  : Eigen::Vector3d(s.head<3>());
+    return margin(p, p);
+  }
+  // The boxes inside_bounds() tests, whose corners the motion bound covers.
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < w.objects.size(); ++i) {
+    const Eigen::AlignedBox3d b = part_box(i);
+    best = std::min(best, margin(b.min(), b.max()));
+  }
+  return best;
+}
+
+double SpatialChecker::compute_free_radius(const State& s) const {
+  if (!check(s)) return 0.0;
+  double r = std::min(compute_clearance(s).distance, bounds_margin(s));
+  Scratch& w = *scratch_;
+  for (const auto& [i, j] : w.self_pairs) {
+    // Two links may approach each other at twice the speed of either.
+    fcl::DistanceRequestd request;
+    fcl::DistanceResultd result;
+    fcl::distance(w.objects[i].get(), w.objects[j].get(), request, result);
+    r = std::min(r, 0.5 * std::max(0.0, result.min_distance));
+  }
+  return r;
+}
+
+double SpatialChecker::compute_motion_bound(const State& a, const State& b) const {
+  switch (robot_.kind()) {
+    case SpatialRobot::Kind::kSphere:
+      return (b.head<3>() - a.head<3>()).norm() ;
+    case SpatialRobot::Kind::kRigid: {
+      // Se3Space slerps the short arc: a point at distance rho from the origin travels rho * angle.
+      const Eigen::Quaterniond qa(a[6], a[3], a[4], a[5]), qb(b[6], b[3], b[4], b[5]);
+      const double angle = qa.normalized().angularDistance(qb.normalized());
+      return (b.head<3>() - a.head<3>()).norm() + motion_radius_ * angle;
+    }
+    case SpatialRobot::Kind::kScara: {
+      // (base yaw, slide, shoulder, elbow, wrist yaw), all revolute but the slide: each yaw turns
+      // the links beyond it about a vertical axis, the slide lifts them. Reaches are horizontal
+      // distances from each axis, with a link radius of slack for the boxes' corners.
+      const ScaraParams& p = robot_.scara_params();
+      double tool = 2.0 * p.link_radius;
+      for (const Solid& t : p.tool) {
+        for (const Eigen::Vector3d& h : t.hull_points()) tool = std::max(tool, h.head<2>().norm());
+      }
+      const double elbow = p.forearm + tool + p.link_radius;
+      const double shoulder = p.upper_arm + elbow + p.link_radius;
+      const double base = shoulder + p.link_radius;
+      return base * std::abs(b[0] - a[0]) + std::abs(b[1] - a[1]) + shoulder * std::abs(b[2] - a[2]) +
+             elbow * std::abs(b[3] - a[3]) + tool * std::abs(b[4] - a[4]);
+    }
+  }
+  return std::numeric_limits<double>::infinity();
 }
 
 }  // namespace amp::world

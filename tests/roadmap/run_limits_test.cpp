@@ -1,0 +1,67 @@
+// A run ends within its time limit plus 5 % + 50 ms, measured around execute_run (planner, query,
+// smoothing and the path clearance included). A limit-honouring test, not a performance test: the
+// goal is sealed, so every run lasts exactly as long as its limit lets it.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "amp/roadmap/run.hpp"
+#include "amp/world/problem.hpp"
+
+namespace amp::roadmap {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kTimeLimit = 1.0;
+constexpr double kAllowance = 0.05 * kTimeLimit + 0.05;
+constexpr std::size_t kNoNodeLimit = 1000000000;
+
+const fs::path kSealed = fs::path(AMP_SOURCE_DIR) / "tests" / "apps" / "data" / "sealed.yaml";
+
+double timed_run(const world::Problem& p, const std::string& planner, core::RunRecord& record) {
+  const auto t0 = std::chrono::steady_clock::now();
+  record = execute_run(p, planner, {}, 11, kTimeLimit, kNoNodeLimit).record;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The sealed goal at the default resolution (many short iterations) and at 1e-7 of the extent
+// (edges of up to 10^7 CD calls, seconds each without polling inside the edge).
+class RunLimits : public ::testing::TestWithParam<const char*> {
+ protected:
+  static world::Problem fine_sealed() {
+    const fs::path file = fs::temp_directory_path() / ("amp_run_limits_" + std::to_string(::getpid()) + ".yaml");
+    std::ifstream in(kSealed);
+    std::ofstream out(file);
+    out << in.rdbuf() << "resolution: 1e-7\n";
+    out.close();
+    world::Problem p = world::load_problem(file);
+    fs::remove(file);
+    return p;
+  }
+};
+
+TEST_P(RunLimits, OneSecondLimitEndsWithinTheAllowance) {
+  const std::string planner = GetParam();
+  const std::pair<world::Problem, const char*> cases[] = {{world::load_problem(kSealed), "the default resolution"},
+                                                           {fine_sealed(), "resolution 1e-7"}};
+  for (const auto& [p, label] : cases) {
+    SCOPED_TRACE(planner + " on sealed.yaml at " + label);
+    core::RunRecord r;
+    const double wall = timed_run(p, planner, r);
+    EXPECT_EQ(r.status, core::PlanStatus::kTimeout) << r.message;
+    EXPECT_LE(wall, kTimeLimit + kAllowance);
+    EXPECT_LE(r.wall_time_s, wall);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Planners, RunLimits, ::testing::Values("prm", "prm-c", "uas"));
+
+}  // namespace
+}  // namespace amp::roadmap
