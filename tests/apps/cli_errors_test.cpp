@@ -230,6 +230,20 @@ TEST_F(CliErrors, MeshAssimpCannotRead) {
                      {"mesh_unreadable.yaml", "world.obstacles[0].mesh.file", "not_a_mesh.stl", "mesh has no triangles"});
 }
 
+TEST_F(CliErrors, EdgeCheckUnknown) {
+  expect_input_error(plan(data("edge_check_unknown.yaml")),
+                     {"edge_check_unknown.yaml", "edge_check", "'certified' or 'discrete'", "'exact'"});
+}
+
+TEST_F(CliErrors, CfgStartOutsideVolume) {
+  expect_input_error(plan(data("start_outside_volume.cfg")), {"start_outside_volume.cfg", "start", "outside"});
+}
+
+TEST_F(CliErrors, CfgMeshWithoutTriangles) {
+  expect_input_error(plan(data("world_no_triangles.cfg")),
+                     {"world_no_triangles.cfg", "world", "no_triangles.stl", "mesh has no triangles"});
+}
+
 TEST_F(CliErrors, MissingMeshFile) {
   expect_input_error(plan(data("mesh_missing.yaml")),
                      {"mesh_missing.yaml", "world.obstacles[0].mesh.file", "no_such_mesh.stl", "no such file"});

@@ -34,6 +34,13 @@ class ProblemDefaults : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST_F(ProblemDefaults, EdgeCheckIsDiscreteUnlessTheFileSaysCertified) {
+  EXPECT_EQ(load("").defaults.edge_check, core::EdgeCheckMode::kDiscrete);
+  EXPECT_EQ(load("edge_check: certified\n").defaults.edge_check, core::EdgeCheckMode::kCertified);
+  EXPECT_EQ(load("edge_check: discrete\n").defaults.edge_check, core::EdgeCheckMode::kDiscrete);
+  EXPECT_THROW(load("edge_check: exact\n"), FileError);
+}
+
 TEST_F(ProblemDefaults, PlannerParametersAreKeptAsWritten) {
   const Problem p = load("defaults: {planner: prm-l, params: {steps: 512, n: 0.3}}\n");
   EXPECT_EQ(p.defaults.planner, "prm-l");

@@ -15,10 +15,11 @@
 // Every fault throws FileError naming the file and the field path.
 namespace amp::world {
 
-// Top-level keys a planar problem file may hold (the lead's loader reads start/goal/seeds/name/defaults).
-inline constexpr std::string_view kPlanarProblemKeys[] = {"bounds", "resolution", "world",    "robot", "start",
-                                                          "goal",   "seeds",      "name",     "defaults",
-                                                          "description"};
+// Top-level keys a planar problem file may hold (load_problem reads start, goal, seeds, name,
+// defaults and edge_check).
+inline constexpr std::string_view kPlanarProblemKeys[] = {"bounds", "resolution", "world",    "robot",
+                                                          "start",  "goal",       "seeds",    "name",
+                                                          "defaults", "description", "edge_check"};
 
 // World + robot + configuration space of a planar problem file.
 LoadedWorld parse_planar_world(const YamlFields& root);
