@@ -31,10 +31,10 @@ class OmplCfg : public ::testing::Test {
     return dir_ / name;
   }
   // An OBJ prism of `polygon` (counter-clockwise, convex: fan caps) between z = 0 and z = h.
-  void write_prism(const std::string& name, const std::vector<Eigen::Vector2d>& polygon, double h) {
+  void write_prism(const std::string& name, const std::vector<Eigen::Vector2d>& polygon, double h, double z0 = 0.0) {
     std::string obj;
     const int n = static_cast<int>(polygon.size());
-    for (double z : {0.0, h}) {
+    for (double z : {z0, h}) {
       for (const auto& p : polygon) obj += "v " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(z) + "\n";
     }
     auto f = [&](int a, int b, int c) {
@@ -88,10 +88,12 @@ TEST_F(OmplCfg, TwoDimensionalProblemRunsOnThePlanarChecker) {
   EXPECT_EQ(p.defaults.planner, "prm");
   EXPECT_DOUBLE_EQ(p.defaults.time_limit_s, 10.0);
   EXPECT_NEAR(p.goal()[2], 1.5707963, 1e-12);
-  // Four obstacle prisms placed by node matrices, as thick as the robot: per box its four sides as
-  // segment walls, and both caps' two triangles as regions (they lie in the robot's cap planes).
-  EXPECT_EQ(p.environment->obstacle_outline().shapes.polygons.size(), 16u);
-  EXPECT_EQ(p.environment->obstacle_outline().shapes.segments.size(), 16u);
+  // Four obstacle prisms placed by node matrices, as thick as the robot: both caps' triangles lie
+  // in the robot's cap planes and merge into one region per box; its four sides lie on the region's
+  // edges and go.
+  EXPECT_EQ(p.environment->obstacle_outline().shapes.polygons.size(), 4u);
+  for (const Polygon& box : p.environment->obstacle_outline().shapes.polygons) EXPECT_EQ(box.vertices.size(), 4u);
+  EXPECT_EQ(p.environment->obstacle_outline().shapes.segments.size(), 0u);
   core::Counters counters;
   auto checker = p.environment->make_checker(counters);
   EXPECT_TRUE(checker->is_valid(p.start()));
@@ -107,17 +109,16 @@ TEST_F(OmplCfg, TwoDimensionalProblemRunsOnThePlanarChecker) {
 // world is its surface within the robot's z slab, seen from above.
 TEST_F(OmplCfg, TwoDimensionalWorldIsTheSurfaceInTheRobotsSlab) {
   const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
-  write_prism("pentagon.obj", pentagon, 0.5);
+  write_prism("pentagon.obj", pentagon, 0.5, -0.2);  // from below the robot to above it
   write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
   const fs::path cfg = write("p.cfg", "[problem]\nrobot = robot.obj\nworld = pentagon.obj\nstart.x = -5\nstart.y = -5\n"
                                       "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
                                       "volume.max.x = 10\nvolume.max.y = 10\n");
   const Problem p = load_ompl_cfg(cfg);
   const Shapes2d walls = p.environment->obstacle_outline().shapes;
-  // The bottom cap lies in the plane of the robot's bottom face (z = 0): its fan's 3 triangles are
-  // regions. The vertical faces lie on the sides (a face's lower triangle gives the side, its upper
-  // one, clipped at the robot's top z = 0.1, a stretch of it). The top cap (z = 0.5) is above.
-  EXPECT_EQ(walls.polygons.size(), 3u);
+  // The caps lie outside the slab z 0..0.1. The vertical faces, clipped to it, lie on the sides (a
+  // face's two triangles give the side and, or only, a stretch of it).
+  EXPECT_EQ(walls.polygons.size(), 0u);
   ASSERT_GE(walls.segments.size(), 5u);
   ASSERT_LE(walls.segments.size(), 10u);
   const auto on_pentagon = [&](const Eigen::Vector2d& v) {
@@ -127,10 +128,20 @@ TEST_F(OmplCfg, TwoDimensionalWorldIsTheSurfaceInTheRobotsSlab) {
   for (std::size_t i = 0; i < pentagon.size(); ++i) {
     const Eigen::Vector2d& a = pentagon[i];
     const Eigen::Vector2d& b = pentagon[(i + 1) % pentagon.size()];
-    const bool found = std::any_of(walls.segments.begin(), walls.segments.end(), [&](const Segment& w) {
-      return ((w.a - a).norm() < 1e-6 && (w.b - b).norm() < 1e-6) || ((w.a - b).norm() < 1e-6 && (w.b - a).norm() < 1e-6);
-    });
-    EXPECT_TRUE(found) << "side " << i;
+    // The walls on this side, as stretches [t0, t1] of it, cover it whole.
+    std::vector<std::pair<double, double>> stretches;
+    const auto at = [&](const Eigen::Vector2d& v) { return (v - a).dot(b - a) / (b - a).squaredNorm(); };
+    for (const Segment& w : walls.segments) {
+      if (std::abs(orient2d(a, b, w.a)) < 1e-6 && std::abs(orient2d(a, b, w.b)) < 1e-6) {
+        stretches.emplace_back(std::min(at(w.a), at(w.b)), std::max(at(w.a), at(w.b)));
+      }
+    }
+    std::sort(stretches.begin(), stretches.end());
+    double reach = 0.0;
+    for (const auto& [t0, t1] : stretches) {
+      if (t0 <= reach + 1e-6) reach = std::max(reach, t1);
+    }
+    EXPECT_GT(reach, 1.0 - 1e-6) << "side " << i;
   }
   core::Counters counters;
   auto checker = p.environment->make_checker(counters);
@@ -140,6 +151,33 @@ TEST_F(OmplCfg, TwoDimensionalWorldIsTheSurfaceInTheRobotsSlab) {
   s << 7.0, 7.0, 0.0;  // clear of it
   EXPECT_TRUE(checker->is_valid(s));
   EXPECT_EQ(p.name, "p");
+}
+
+// A cap in the plane of the robot's bottom face (z = 0) overlaps it wherever their shadows meet: its
+// fan's triangles merge into the pentagon, a region, and the sides on its edges go.
+TEST_F(OmplCfg, CapInTheRobotsPlaneIsOneRegion) {
+  const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
+  write_prism("pentagon.obj", pentagon, 0.5);
+  write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
+  const fs::path cfg = write("p.cfg", "[problem]\nrobot = robot.obj\nworld = pentagon.obj\nstart.x = -5\nstart.y = -5\n"
+                                      "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
+                                      "volume.max.x = 10\nvolume.max.y = 10\n");
+  const Problem p = load_ompl_cfg(cfg);
+  const Shapes2d walls = p.environment->obstacle_outline().shapes;
+  ASSERT_EQ(walls.polygons.size(), 1u);
+  EXPECT_EQ(walls.polygons[0].vertices.size(), 5u);
+  EXPECT_NEAR(signed_area(walls.polygons[0].vertices), signed_area(pentagon), 1e-5);  // assimp reads floats
+  EXPECT_EQ(walls.segments.size(), 0u);
+  // The robot prism's two caps (one facing down) merge into its one triangle.
+  ASSERT_EQ(p.environment->robot_outline(p.start()).polygons.size(), 1u);
+  EXPECT_EQ(p.environment->robot_outline(p.start()).polygons[0].vertices.size(), 3u);
+  core::Counters counters;
+  auto checker = p.environment->make_checker(counters);
+  State s(3);
+  s << 2.0, 2.0, 0.0;  // wholly inside the region
+  EXPECT_FALSE(checker->is_valid(s));
+  s << 7.0, 7.0, 0.0;
+  EXPECT_TRUE(checker->is_valid(s));
 }
 
 TEST_F(OmplCfg, WorldAboveTheRobotIsLeftOut) {

@@ -11,6 +11,7 @@
 #include "amp/world/mesh_loader.hpp"
 #include "amp/world/planar_environment.hpp"
 #include "amp/world/spatial_environment.hpp"
+#include "amp/world/outline_merge.hpp"
 #include "world/spatial/projection.hpp"
 
 namespace amp::world {
@@ -174,6 +175,11 @@ void load_2d(const CfgFile& cfg, const TriangleMesh& robot_mesh, const TriangleM
   detail::project_slab_surface(world_mesh, robot_box.min().z(), robot_box.max().z(), obstacles);
   detail::project_triangles(robot_mesh, Eigen::Isometry3d::Identity(), body);
   if (body.polygons.empty()) cfg.fail("problem", "robot", "mesh has no triangle of non-zero area in the plane");
+  // The same closed sets in fewer pieces: a prism's cap triangles become its outline, and the
+  // walls along a region's edges go (a check costs the edges it walks).
+  body.polygons = merge_tiles(std::move(body.polygons));
+  obstacles.polygons = merge_tiles(std::move(obstacles.polygons));
+  drop_segments_on_polygon_edges(obstacles);
   const Eigen::AlignedBox2d bounds(box.min().head<2>(), box.max().head<2>());
   try {
     auto world = std::make_shared<const PlanarWorld>(std::move(obstacles), bounds);
