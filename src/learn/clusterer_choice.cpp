@@ -19,7 +19,8 @@ std::unique_ptr<Clusterer> make_clusterer(std::string_view name) {
   throw ParameterError("unknown clustering '" + std::string(name) + "' (choose kmeans, ward, pgmeans or auto)");
 }
 
-ClusteringChoice AutoClusterer::choose(const Eigen::MatrixXd& points, core::Rng& rng) const {
+ClusteringChoice AutoClusterer::choose(const Eigen::MatrixXd& points, core::Rng& rng,
+                                       const core::StopCondition* stop) const {
   validate_points(points, "auto clustering");
   const std::uint64_t base = rng.next_u64();
   ClusteringChoice out;
@@ -27,8 +28,8 @@ ClusteringChoice AutoClusterer::choose(const Eigen::MatrixXd& points, core::Rng&
   std::uint64_t stream = 0;
   for (const std::string_view name : {"kmeans", "ward", "pgmeans"}) {
     core::Rng own(core::derive_seed(base, stream++));
-    Clustering c = make_clusterer(name)->cluster(points, own);
-    const double score = mean_silhouette(points, c.labels, c.c);
+    Clustering c = make_clusterer(name)->cluster(points, own, stop);
+    const double score = mean_silhouette(points, c.labels, c.c, stop);
     out.methods.emplace_back(name);
     out.scores.push_back(score);
     out.clusters.push_back(c.c);
@@ -41,8 +42,9 @@ ClusteringChoice AutoClusterer::choose(const Eigen::MatrixXd& points, core::Rng&
   return out;
 }
 
-Clustering AutoClusterer::cluster(const Eigen::MatrixXd& points, core::Rng& rng) const {
-  return choose(points, rng).clustering;
+Clustering AutoClusterer::cluster(const Eigen::MatrixXd& points, core::Rng& rng,
+                                  const core::StopCondition* stop) const {
+  return choose(points, rng, stop).clustering;
 }
 
 }  // namespace amp::learn

@@ -70,7 +70,8 @@ void mixture_responsibilities(const Eigen::MatrixXd& points, const GaussianMixtu
   }
 }
 
-EmFit fit_em(const Eigen::MatrixXd& points, GaussianMixture initial, const EmSettings& settings) {
+EmFit fit_em(const Eigen::MatrixXd& points, GaussianMixture initial, const EmSettings& settings,
+             const core::StopCondition* stop) {
   settings.validate();
   validate_points(points, "em");
   const Eigen::Index n = points.rows();
@@ -84,6 +85,7 @@ EmFit fit_em(const Eigen::MatrixXd& points, GaussianMixture initial, const EmSet
   Eigen::VectorXd diff(d);
   double previous = -std::numeric_limits<double>::infinity();
   for (int it = 0; it < settings.max_iterations; ++it) {
+    poll(stop);
     mixture_responsibilities(points, fit.model, resp, ll);  // E-step
     fit.log_likelihood = ll.sum();
     fit.iterations = it + 1;

@@ -46,7 +46,8 @@ std::size_t draw_by_weight(std::span<const double> weights, double u) {
   return last_positive;  // rounding left target at the very top
 }
 
-KMeansFit lloyd(const Eigen::MatrixXd& points, Eigen::MatrixXd centres, int max_iterations) {
+KMeansFit lloyd(const Eigen::MatrixXd& points, Eigen::MatrixXd centres, int max_iterations,
+                const core::StopCondition* stop) {
   const Eigen::Index n = points.rows();
   const Eigen::Index k = centres.rows();
   const Eigen::MatrixXd x = points.transpose();  // d x n: each point contiguous
@@ -57,6 +58,7 @@ KMeansFit lloyd(const Eigen::MatrixXd& points, Eigen::MatrixXd centres, int max_
   KMeansFit fit;
   fit.labels.assign(static_cast<std::size_t>(n), -1);
   for (int it = 0; it < max_iterations; ++it) {
+    poll(stop);
     bool changed = false;
     for (Eigen::Index i = 0; i < n; ++i) {
       const int l = nearest(c, x.col(i), dist[i]);
@@ -95,12 +97,14 @@ KMeansFit lloyd(const Eigen::MatrixXd& points, Eigen::MatrixXd centres, int max_
   return fit;
 }
 
-Eigen::MatrixXd kmeans_pp_seeds(const Eigen::MatrixXd& points, int k, core::Rng& rng) {
+Eigen::MatrixXd kmeans_pp_seeds(const Eigen::MatrixXd& points, int k, core::Rng& rng,
+                                const core::StopCondition* stop) {
   const Eigen::Index n = points.rows();
   Eigen::MatrixXd seeds(k, points.cols());
   std::vector<double> d2(static_cast<std::size_t>(n), kInf);
   std::size_t pick = rng.uniform_index(static_cast<std::uint64_t>(n));
   for (int j = 0; j < k; ++j) {
+    poll(stop);
     if (j > 0) pick = draw_by_weight(d2, rng.uniform01());
     seeds.row(j) = points.row(static_cast<Eigen::Index>(pick));
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -111,7 +115,8 @@ Eigen::MatrixXd kmeans_pp_seeds(const Eigen::MatrixXd& points, int k, core::Rng&
   return seeds;
 }
 
-KMeansFit fit_kmeans(const Eigen::MatrixXd& points, int k, int restarts, int max_iterations, core::Rng& rng) {
+KMeansFit fit_kmeans(const Eigen::MatrixXd& points, int k, int restarts, int max_iterations, core::Rng& rng,
+                     const core::StopCondition* stop) {
   validate_points(points, "kmeans");
   if (k < 1 || k > points.rows()) {
     throw ParameterError("kmeans: k: " + std::to_string(k) + " outside 1.." + std::to_string(points.rows()));
@@ -119,7 +124,7 @@ KMeansFit fit_kmeans(const Eigen::MatrixXd& points, int k, int restarts, int max
   KMeansFit best;
   best.wcss = kInf;
   for (int r = 0; r < restarts; ++r) {
-    KMeansFit fit = lloyd(points, kmeans_pp_seeds(points, k, rng), max_iterations);
+    KMeansFit fit = lloyd(points, kmeans_pp_seeds(points, k, rng, stop), max_iterations, stop);
     if (fit.wcss < best.wcss) best = std::move(fit);
   }
   return best;
@@ -135,14 +140,14 @@ void KMeansSettings::validate() const {
 
 KMeans::KMeans(KMeansSettings settings) : settings_(settings) { settings_.validate(); }
 
-Clustering KMeans::cluster(const Eigen::MatrixXd& points, core::Rng& rng) const {
+Clustering KMeans::cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const {
   validate_points(points, "kmeans");
   const int max_c = static_cast<int>(std::min<Eigen::Index>(settings_.max_clusters, points.rows()));
   const double total = total_sum_of_squares(points);
   std::vector<KMeansFit> fits;
   Clustering out;
   for (int c = 1; c <= max_c; ++c) {
-    fits.push_back(fit_kmeans(points, c, settings_.restarts, settings_.max_iterations, rng));
+    fits.push_back(fit_kmeans(points, c, settings_.restarts, settings_.max_iterations, rng, stop));
     out.curve.push_back(total > 0.0 ? fits.back().wcss / total : 0.0);
   }
   out.curve[0] = total > 0.0 ? 1.0 : 0.0;  // W(1) = T exactly; avoids 1 +- rounding

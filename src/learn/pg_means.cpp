@@ -25,7 +25,7 @@ void PgMeansSettings::validate() const {
 }
 
 ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMixture& model, int projections,
-                                double alpha, core::Rng& rng) {
+                                double alpha, core::Rng& rng, const core::StopCondition* stop) {
   const Eigen::Index n = points.rows();
   const Eigen::Index d = points.cols();
   const int k = model.k();
@@ -36,6 +36,7 @@ ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMix
   std::vector<boost::math::normal> components(static_cast<std::size_t>(k));
   ProjectionTest out;
   for (int p = 0; p < projections; ++p) {
+    poll(stop);
     do {
       for (Eigen::Index i = 0; i < d; ++i) u[i] = rng.normal();
     } while (u.squaredNorm() == 0.0);
@@ -61,7 +62,8 @@ ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMix
 
 PgMeans::PgMeans(PgMeansSettings settings) : settings_(settings) { settings_.validate(); }
 
-EmFit PgMeans::add_cluster(const Eigen::MatrixXd& points, const EmFit& current, core::Rng& rng) const {
+EmFit PgMeans::add_cluster(const Eigen::MatrixXd& points, const EmFit& current, core::Rng& rng,
+                          const core::StopCondition* stop) const {
   const Eigen::Index n = points.rows();
   const GaussianMixture& m = current.model;
   const int k = m.k();
@@ -89,23 +91,23 @@ EmFit PgMeans::add_cluster(const Eigen::MatrixXd& points, const EmFit& current, 
     init.weights[k] = half;
     init.means.push_back(points.row(pick).transpose());
     init.covariances.push_back(m.covariances[static_cast<std::size_t>(owner)]);
-    EmFit fit = fit_em(points, std::move(init), settings_.em);
+    EmFit fit = fit_em(points, std::move(init), settings_.em, stop);
     if (fit.log_likelihood > best.log_likelihood) best = std::move(fit);
   }
   return best;
 }
 
-Clustering PgMeans::cluster(const Eigen::MatrixXd& points, core::Rng& rng) const {
+Clustering PgMeans::cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const {
   validate_points(points, "pgmeans");
   const Eigen::Index n = points.rows();
   const int max_k = static_cast<int>(std::min<Eigen::Index>(settings_.max_clusters, n));
   Clustering out;
-  EmFit fit = fit_em(points, single_gaussian(points, settings_.em.ridge), settings_.em);
+  EmFit fit = fit_em(points, single_gaussian(points, settings_.em.ridge), settings_.em, stop);
   for (;;) {
-    const ProjectionTest test = test_projections(points, fit.model, settings_.projections, settings_.alpha, rng);
+    const ProjectionTest test = test_projections(points, fit.model, settings_.projections, settings_.alpha, rng, stop);
     out.curve.push_back(test.worst_ratio);
     if (test.accepted || fit.model.k() >= max_k) break;
-    fit = add_cluster(points, fit, rng);
+    fit = add_cluster(points, fit, rng, stop);
   }
   // Nearest mean (Euclidean) per point.
   const int k = fit.model.k();

@@ -6,7 +6,8 @@
 
 namespace amp::learn {
 
-double mean_silhouette(const Eigen::MatrixXd& points, const std::vector<int>& labels, int c) {
+double mean_silhouette(const Eigen::MatrixXd& points, const std::vector<int>& labels, int c,
+                       const core::StopCondition* stop) {
   const Eigen::Index n = points.rows();
   if (c < 2 || n < 2) return 0.0;
   std::vector<double> size(static_cast<std::size_t>(c), 0.0);
@@ -14,6 +15,7 @@ double mean_silhouette(const Eigen::MatrixXd& points, const std::vector<int>& la
   std::vector<double> sum(static_cast<std::size_t>(c));  // distance sums from point i to each cluster
   double total = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
+    poll(stop);
     std::fill(sum.begin(), sum.end(), 0.0);
     for (Eigen::Index j = 0; j < n; ++j) {
       if (j != i) sum[static_cast<std::size_t>(labels[static_cast<std::size_t>(j)])] += (points.row(i) - points.row(j)).norm();

@@ -66,13 +66,14 @@ std::vector<int> WardDendrogram::cut(int c) const {
   return labels;
 }
 
-WardDendrogram ward_linkage(const Eigen::MatrixXd& points) {
+WardDendrogram ward_linkage(const Eigen::MatrixXd& points, const core::StopCondition* stop) {
   validate_points(points, "ward");
   const int n = static_cast<int>(points.rows());
   const auto un = static_cast<std::size_t>(n);
   // d2[i*n + j]: squared Ward distance between the clusters in slots i and j (initially |xi - xj|^2).
   std::vector<double> d2(un * un, 0.0);
   for (int i = 0; i < n; ++i) {
+    poll(stop);
     for (int j = i + 1; j < n; ++j) {
       const double d = (points.row(i) - points.row(j)).squaredNorm();
       d2[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)] = d;
@@ -88,6 +89,7 @@ WardDendrogram ward_linkage(const Eigen::MatrixXd& points) {
   raw.reserve(un);
   int first_active = 0;
   while (static_cast<int>(raw.size()) < n - 1) {
+    poll(stop);  // each merge costs O(n) per chain step
     if (chain.empty()) {
       while (!active[static_cast<std::size_t>(first_active)]) ++first_active;
       chain.push_back(first_active);
@@ -159,8 +161,9 @@ void WardSettings::validate() const {
 
 WardClustering::WardClustering(WardSettings settings) : settings_(settings) { settings_.validate(); }
 
-Clustering WardClustering::cluster(const Eigen::MatrixXd& points, core::Rng& /*rng*/) const {
-  const WardDendrogram tree = ward_linkage(points);
+Clustering WardClustering::cluster(const Eigen::MatrixXd& points, core::Rng& /*rng*/,
+                                   const core::StopCondition* stop) const {
+  const WardDendrogram tree = ward_linkage(points, stop);
   const int n = tree.n;
   const int max_c = std::min(settings_.max_clusters, n);
   // Merge i raises W by height^2 / 2, so W(c) = the sum of the first n - c raises.

@@ -127,16 +127,21 @@ RegionModel identify_regions(const PlanningContext& ctx, const RegionSettings& s
   model.training = build_training_roadmap(ctx, settings.training, stop, rng);
   if (model.training.stopped != core::StopReason::kNone) return model;
   const Eigen::MatrixXd features = learn::standardize(model.training.features());
-  if (settings.clustering == "auto") {
-    learn::ClusteringChoice choice = learn::AutoClusterer().choose(features, rng);
-    model.clustering = std::move(choice.clustering);
-    model.method = choice.method;
-    model.auto_methods = std::move(choice.methods);
-    model.auto_scores = std::move(choice.scores);
-    model.auto_clusters = std::move(choice.clusters);
-  } else {
-    model.clustering = learn::make_clusterer(settings.clustering)->cluster(features, rng);
-    model.method = settings.clustering;
+  try {
+    if (settings.clustering == "auto") {
+      learn::ClusteringChoice choice = learn::AutoClusterer().choose(features, rng, &stop);
+      model.clustering = std::move(choice.clustering);
+      model.method = choice.method;
+      model.auto_methods = std::move(choice.methods);
+      model.auto_scores = std::move(choice.scores);
+      model.auto_clusters = std::move(choice.clusters);
+    } else {
+      model.clustering = learn::make_clusterer(settings.clustering)->cluster(features, rng, &stop);
+      model.method = settings.clustering;
+    }
+  } catch (const learn::ClusteringStopped&) {
+    model.training.stopped = stop.check(model.training.size());  // the time limit or a cancel
+    return model;
   }
   model.robot_size = region_robot_size(ctx.environment);
   std::vector<Eigen::Vector3d> seeds;

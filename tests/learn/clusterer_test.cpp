@@ -12,6 +12,7 @@
 //    itself (a scale mixture) projects to 1-D distributions that the KS test, at the conservative
 //    asymptotic critical value (pg_means.hpp), accepts: it stops at 2-4 clusters. Polygons and the
 //    bipyramid have no such shortcut.
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -21,8 +22,10 @@
 
 #include "amp/core/rng.hpp"
 #include "amp/learn/adjusted_rand_index.hpp"
+#include "amp/learn/clusterer_choice.hpp"
 #include "amp/learn/kmeans.hpp"
 #include "amp/learn/pg_means.hpp"
+#include "amp/learn/silhouette.hpp"
 #include "amp/learn/ward.hpp"
 
 namespace amp::learn {
@@ -144,6 +147,29 @@ TEST_P(ClustererTest, OneBlob) {
     EXPECT_LE(out.c, 9);
     EXPECT_EQ(out.curve.size(), 10u);
   }
+}
+
+// A run's stop condition reaches inside the clustering: once it has fired, the clustering throws
+// instead of finishing; while it has not, the result is the one without it.
+TEST_P(ClustererTest, StopsWhenTheRunsStopConditionFires) {
+  const std::unique_ptr<Clusterer> method = GetParam().make();
+  const Blobs b = make_blobs(layouts()[0], 4);
+  std::atomic<bool> cancel{true};
+  const core::StopCondition cancelled(60.0, 1000000, &cancel);
+  core::Rng rng(9);
+  EXPECT_THROW(method->cluster(b.points, rng, &cancelled), ClusteringStopped);
+  const core::StopCondition ample(600.0, 1000000);
+  core::Rng r1(9), r2(9);
+  EXPECT_EQ(method->cluster(b.points, r1, &ample).labels, method->cluster(b.points, r2).labels);
+}
+
+TEST(AutoClusterer, StopsWhenTheRunsStopConditionFires) {
+  const Blobs b = make_blobs(layouts()[0], 4);
+  std::atomic<bool> cancel{true};
+  const core::StopCondition cancelled(60.0, 1000000, &cancel);
+  core::Rng rng(9);
+  EXPECT_THROW(AutoClusterer().choose(b.points, rng, &cancelled), ClusteringStopped);
+  EXPECT_THROW(mean_silhouette(b.points, b.truth, 3, &cancelled), ClusteringStopped);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, ClustererTest, ::testing::ValuesIn(kMethods),

@@ -1,10 +1,12 @@
 #pragma once
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "amp/core/rng.hpp"
+#include "amp/core/stop_condition.hpp"
 
 namespace amp::learn {
 
@@ -19,12 +21,28 @@ struct Clustering {
   std::vector<double> curve;
 };
 
+// Thrown out of a clustering when the stop condition it was given fires: a clustering is all or
+// nothing, so a planner that clusters inside its run (UAS) ends the run as stopped.
+class ClusteringStopped : public std::runtime_error {
+ public:
+  ClusteringStopped() : std::runtime_error("clustering stopped by the run's stop condition") {}
+};
+
+// Between two steps of a clustering: throws ClusteringStopped once `stop` (null: never) has fired.
+inline void poll(const core::StopCondition* stop) {
+  if (stop != nullptr && stop->time_up()) throw ClusteringStopped();
+}
+
 // Partitions points (rows of an n x d matrix) into clusters whose number the method chooses itself.
-// Implementations: KMeans, WardClustering, PgMeans. Same input and same Rng state, same result.
+// Implementations: KMeans, WardClustering, PgMeans, AutoClusterer. Same input and same Rng state,
+// same result.
 class Clusterer {
  public:
   virtual ~Clusterer() = default;
-  virtual Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng) const = 0;
+  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng) const { return cluster(points, rng, nullptr); }
+  // Polls `stop` between steps (each a pass over the points at most) and throws ClusteringStopped
+  // when it fires, so that a run's time limit holds through an O(n^2) clustering.
+  virtual Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const = 0;
   virtual std::string_view name() const = 0;
 };
 

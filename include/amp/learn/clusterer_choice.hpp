@@ -31,9 +31,10 @@ struct ClusteringChoice {
 // The rule is measured against the best fixed method in docs/uas.md.
 class AutoClusterer final : public Clusterer {
  public:
-  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng) const override;
+  using Clusterer::cluster;
+  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const override;
   std::string_view name() const override { return "auto"; }
-  ClusteringChoice choose(const Eigen::MatrixXd& points, core::Rng& rng) const;
+  ClusteringChoice choose(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop = nullptr) const;
 };
 
 }  // namespace amp::learn

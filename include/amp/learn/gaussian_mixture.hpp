@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "amp/learn/clusterer.hpp"
+
 namespace amp::learn {
 
 // A mixture of k Gaussians with full covariances in d dimensions.
@@ -32,7 +34,8 @@ struct EmFit {
 // Expectation-maximisation (Dempster, Laird & Rubin 1977) for a Gaussian mixture from `initial`.
 // A component whose responsibility mass falls below one point keeps its previous mean and
 // covariance (weight ~ 0) rather than producing a singular estimate.
-EmFit fit_em(const Eigen::MatrixXd& points, GaussianMixture initial, const EmSettings& settings);
+EmFit fit_em(const Eigen::MatrixXd& points, GaussianMixture initial, const EmSettings& settings,
+             const core::StopCondition* stop = nullptr);
 
 // The single Gaussian of the data (sample mean, maximum-likelihood covariance + ridge).
 GaussianMixture single_gaussian(const Eigen::MatrixXd& points, double ridge);

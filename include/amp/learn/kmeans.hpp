@@ -21,12 +21,14 @@ struct KMeansFit {
 // Lloyd's algorithm (Lloyd 1982) from the given k x d centres: assign each point to its nearest
 // centre, move each centre to the mean of its points, until no assignment changes or max_iterations.
 // A centre left without points jumps to the point farthest from its own centre (so k stays k).
-KMeansFit lloyd(const Eigen::MatrixXd& points, Eigen::MatrixXd centres, int max_iterations);
+KMeansFit lloyd(const Eigen::MatrixXd& points, Eigen::MatrixXd centres, int max_iterations,
+                const core::StopCondition* stop = nullptr);
 
 // k-means++ seeding (Arthur & Vassilvitskii 2007): the first centre is a uniformly random point, each
 // next one a point drawn with probability proportional to its squared distance D^2 to the nearest
 // centre chosen so far. Returns k x d.
-Eigen::MatrixXd kmeans_pp_seeds(const Eigen::MatrixXd& points, int k, core::Rng& rng);
+Eigen::MatrixXd kmeans_pp_seeds(const Eigen::MatrixXd& points, int k, core::Rng& rng,
+                                const core::StopCondition* stop = nullptr);
 
 // The index i with prefix(i-1) <= u * sum(weights) < prefix(i) (inverse-cdf draw; u in [0, 1)).
 // Zero-weight entries are never drawn while some weight is positive; all zero: uniform on u.
@@ -34,7 +36,8 @@ std::size_t draw_by_weight(std::span<const double> weights, double u);
 
 // The best of `restarts` k-means++ + Lloyd runs (lowest within-cluster sum of squares; ties keep
 // the earlier run).
-KMeansFit fit_kmeans(const Eigen::MatrixXd& points, int k, int restarts, int max_iterations, core::Rng& rng);
+KMeansFit fit_kmeans(const Eigen::MatrixXd& points, int k, int restarts, int max_iterations, core::Rng& rng,
+                     const core::StopCondition* stop = nullptr);
 
 struct KMeansSettings {
   int max_clusters = 10;    // c tried: 1..max_clusters (at most n)
@@ -48,7 +51,8 @@ struct KMeansSettings {
 class KMeans final : public Clusterer {
  public:
   explicit KMeans(KMeansSettings settings = {});
-  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng) const override;
+  using Clusterer::cluster;
+  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const override;
   std::string_view name() const override { return "kmeans"; }
 
  private:

@@ -27,7 +27,7 @@ struct ProjectionTest {
 // (Boost.Math normal), at critical value ks_critical_value(n, alpha) (asymptotic Kolmogorov law with
 // Stephens' finite-n scaling; see kolmogorov.hpp).
 ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMixture& model, int projections,
-                                double alpha, core::Rng& rng);
+                                double alpha, core::Rng& rng, const core::StopCondition* stop = nullptr);
 
 // PG-means (Feng & Hamerly, "PG-means: learning the number of clusters in data", NIPS 2006):
 // fit a Gaussian mixture by EM starting from k = 1; test the fit by test_projections; while some
@@ -47,11 +47,13 @@ ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMix
 class PgMeans final : public Clusterer {
  public:
   explicit PgMeans(PgMeansSettings settings = {});
-  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng) const override;
+  using Clusterer::cluster;
+  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const override;
   std::string_view name() const override { return "pgmeans"; }
 
  private:
-  EmFit add_cluster(const Eigen::MatrixXd& points, const EmFit& current, core::Rng& rng) const;
+  EmFit add_cluster(const Eigen::MatrixXd& points, const EmFit& current, core::Rng& rng,
+                    const core::StopCondition* stop) const;
   PgMeansSettings settings_;
 };
 

@@ -30,7 +30,7 @@ struct WardDendrogram {
 // algorithm (Murtagh 1983) on a full matrix of squared Ward distances updated by the Lance-Williams
 // formula: O(n^2) time and memory. Merges are then sorted by height as SciPy does (Ward is reducible,
 // so the chain's merges form a valid dendrogram in that order). Exact ties are broken by index.
-WardDendrogram ward_linkage(const Eigen::MatrixXd& points);
+WardDendrogram ward_linkage(const Eigen::MatrixXd& points, const core::StopCondition* stop = nullptr);
 
 struct WardSettings {
   int max_clusters = 10;  // c tried: 1..max_clusters (at most n)
@@ -43,7 +43,8 @@ struct WardSettings {
 class WardClustering final : public Clusterer {
  public:
   explicit WardClustering(WardSettings settings = {});
-  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng) const override;
+  using Clusterer::cluster;
+  Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const override;
   std::string_view name() const override { return "ward"; }
 
  private:

@@ -39,7 +39,8 @@ struct TrainingSet {
   std::vector<int> sampler;                // 0 uniform, 1 Gaussian, 2 OBPRM
   bool planar = true;                      // planar world: Z is not a feature
   std::uint64_t failed_samples = 0;
-  core::StopReason stopped = core::StopReason::kNone;  // the stop condition fired before `nodes`
+  // The stop fired before `nodes` (or, in identify_regions, during clustering).
+  core::StopReason stopped = core::StopReason::kNone;
 
   std::size_t size() const { return positions.size(); }
   // n x (3 or 4): visibility, X, Y[, Z], not yet standardised.

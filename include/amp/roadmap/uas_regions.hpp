@@ -69,8 +69,8 @@ double narrow_weight(const Region& region, const TrainingSet& training);
 double region_robot_size(const world::Environment& environment);
 
 // Training roadmap (CD calls in the counters' current phase), standardised features, clustering and
-// regions. If `stop` fires during training, the model holds the partial training set, no clustering
-// and no region (training.stopped says why). Throws amp::Error when training found no free state.
+// regions. If `stop` fires during training or clustering, the model holds the training set (partial,
+// if cut short), no clustering and no region (training.stopped says why). Throws amp::Error when training found no free state.
 RegionModel identify_regions(const PlanningContext& ctx, const RegionSettings& settings,
                              const core::StopCondition& stop, core::Rng& rng);
 
