@@ -3,6 +3,7 @@
 // resolution (edges are checked at discrete states, as in OMPL: a corner thinner than the resolution
 // can be clipped between two of them, so a finer re-check is not a property PRM promises); the same
 // seed gives the same path and the same CD count.
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -24,7 +25,16 @@ std::filesystem::path problem_file(const std::string& name) {
 }
 
 
-class BundledProblem : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+using Case = std::tuple<std::string, std::string>;  // problem file, planner
+
+class BundledProblem : public ::testing::TestWithParam<Case> {};
+
+// "maze_rrt_connect": the file's stem and the planner, as a test name.
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  std::string n = std::filesystem::path(std::get<0>(info.param)).stem().string() + "_" + std::get<1>(info.param);
+  for (char& c : n) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return n;
+}
 
 TEST_P(BundledProblem, SolvedWithAValidReproduciblePath) {
   const auto& [file, planner] = GetParam();
@@ -49,12 +59,15 @@ INSTANTIATE_TEST_SUITE_P(Problems, BundledProblem,
                                                               "ompl/gap_planar.cfg", "ompl/cage_window.cfg",
                                                               "scara-wicket.yaml", "puzzle.yaml"),
                                             ::testing::Values("prm", "uas")),
-                         [](const auto& info) {
-                           std::string n = std::filesystem::path(std::get<0>(info.param)).stem().string() + "_" +
-                                           std::get<1>(info.param);
-                           for (char& c : n) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-                           return n;
-                         });
+                         case_name);
+
+// RRT-Connect, the bidirectional tree planner, on a problem of each kind: planar, polygon robot,
+// arm, 3-D, SCARA.
+INSTANTIATE_TEST_SUITE_P(RrtConnect, BundledProblem,
+                         ::testing::Combine(::testing::Values("maze.yaml", "hook.yaml", "linkage.yaml", "walls3d.yaml",
+                                                              "scara-wicket.yaml"),
+                                            ::testing::Values("rrt-connect")),
+                         case_name);
 
 // Section 3's planners on its problems (the A* grid local planner's paths are checked at the
 // space's resolution too, between grid states), and on an arm and an OMPL.app SE3 problem.
@@ -62,12 +75,7 @@ INSTANTIATE_TEST_SUITE_P(CompetencePrms, BundledProblem,
                          ::testing::Combine(::testing::Values("scara-wicket.yaml", "puzzle.yaml", "linkage.yaml",
                                                               "ompl/cage_window.cfg"),
                                             ::testing::Values("prm-c", "prm-g", "prm-l")),
-                         [](const auto& info) {
-                           std::string n = std::filesystem::path(std::get<0>(info.param)).stem().string() + "_" +
-                                           std::get<1>(info.param);
-                           for (char& c : n) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-                           return n;
-                         });
+                         case_name);
 
 }  // namespace
 }  // namespace amp

@@ -19,6 +19,7 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "../support/path_checks.hpp"
+#include "../support/time_allowance.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -27,15 +28,7 @@ namespace fs = std::filesystem;
 
 constexpr double kTimeLimit = 0.5;
 constexpr std::size_t kNodeLimit = 2000;
-// What a run may take beyond its limit (5 % + 50 ms).
-// Sanitizer builds (make sanitize) run instrumented code several times slower, frees included;
-// the limit is the Release build's promise.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kSlowdown = 10.0;
-#else
-constexpr double kSlowdown = 1.0;
-#endif
-constexpr double kAllowance = kSlowdown * (0.05 * kTimeLimit + 0.05);
+constexpr double kAllowance = test::time_allowance(kTimeLimit);
 // Paths are re-checked against the same world at this resolution (4 times finer): checking at a
 // 1e-9 step would cost as much as planning did.
 constexpr double kCheckResolution = 1e-2;

@@ -72,15 +72,15 @@ void expect_solved_and_valid(const world::Problem& p, const Outcome& o, int refi
   EXPECT_EQ(o.result.edges, o.result.nodes - 1);  // trees and their meeting edges: still a tree
 }
 
-TEST(RrtConnect, SolvesBundledProblems) {
-  for (const char* name : {"maze.yaml", "hook.yaml", "linkage.yaml", "walls3d.yaml", "scara-wicket.yaml"}) {
-    const world::Problem& p = bundled(name);
-    const Outcome o = run_rrt(p, 1);
-    expect_solved_and_valid(p, o);
-    EXPECT_EQ(o.result.extra.at("legs_solved"), 1.0) << name;
-    EXPECT_TRUE(o.result.extra.count("certify_refused")) << name;
-    EXPECT_TRUE(o.result.extra.count("certified_segments")) << name;
-  }
+// The other bundled problems (hook, linkage, walls3d, scara-wicket) are solved in
+// tests/problems/bundled_problems_test.cpp, which the sanitizer run leaves out.
+TEST(RrtConnect, SolvesTheBundledMaze) {
+  const world::Problem& p = bundled("maze.yaml");
+  const Outcome o = run_rrt(p, 1);
+  expect_solved_and_valid(p, o);
+  EXPECT_EQ(o.result.extra.at("legs_solved"), 1.0);
+  EXPECT_TRUE(o.result.extra.count("certify_refused"));
+  EXPECT_TRUE(o.result.extra.count("certified_segments"));
 }
 
 TEST(RrtConnect, SameSeedSameResultDifferentSeedDifferentResult) {

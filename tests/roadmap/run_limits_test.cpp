@@ -13,6 +13,7 @@
 
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
+#include "../support/time_allowance.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -20,14 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kTimeLimit = 1.0;
-// Sanitizer builds (make sanitize) run instrumented code several times slower, frees included;
-// the limit is the Release build's promise.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kSlowdown = 10.0;
-#else
-constexpr double kSlowdown = 1.0;
-#endif
-constexpr double kAllowance = kSlowdown * (0.05 * kTimeLimit + 0.05);
+constexpr double kAllowance = test::time_allowance(kTimeLimit);
 constexpr std::size_t kNoNodeLimit = 1000000000;
 
 const fs::path kSealed = fs::path(AMP_SOURCE_DIR) / "tests" / "apps" / "data" / "sealed.yaml";

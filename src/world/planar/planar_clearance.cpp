@@ -43,27 +43,9 @@ void PlanarChecker::nearest_to_polygon(int k, double& best_sq, Clearance& out) c
   const auto& edges = world_->edges();
   const auto& obstacles = world_->obstacles();
   Eigen::Vector2d on_robot, on_obstacle;
-  for (std::size_t p = 0; p < obstacles.polygons.size(); ++p) {
-    // Box distance is a lower bound: skip whole polygons, then single edges, that cannot win.
-    if (box.squaredExteriorDistance(world_->polygon_boxes()[p]) >= best_sq) continue;
-    const int first = polygon_first_edge_[p];
-    const int last = first + static_cast<int>(obstacles.polygons[p].vertices.size());
-    for (int id = first; id < last; ++id) {
-      const PlanarEdge& e = edges[id];
-      if (box.squaredExteriorDistance(e.box) >= best_sq) continue;
-      for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
-        const double d = segment_segment_distance_sq(v[j], v[i], e.a, e.b, &on_robot, &on_obstacle);
-        if (d < best_sq) {
-          best_sq = d;
-          out.robot_point = lift(on_robot);
-          out.obstacle_point = lift(on_obstacle);
-        }
-      }
-    }
-  }
-  for (int id = world_->first_segment_edge(); id < static_cast<int>(edges.size()); ++id) {
-    const PlanarEdge& e = edges[id];
-    if (box.squaredExteriorDistance(e.box) >= best_sq) continue;
+  // Box distance is a lower bound: skip whole polygons, then single edges, that cannot win.
+  const auto nearest_to_edge = [&](const PlanarEdge& e) {
+    if (box.squaredExteriorDistance(e.box) >= best_sq) return;
     for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
       const double d = segment_segment_distance_sq(v[j], v[i], e.a, e.b, &on_robot, &on_obstacle);
       if (d < best_sq) {
@@ -72,7 +54,14 @@ void PlanarChecker::nearest_to_polygon(int k, double& best_sq, Clearance& out) c
         out.obstacle_point = lift(on_obstacle);
       }
     }
+  };
+  for (std::size_t p = 0; p < obstacles.polygons.size(); ++p) {
+    if (box.squaredExteriorDistance(world_->polygon_boxes()[p]) >= best_sq) continue;
+    const int first = polygon_first_edge_[p];
+    const int last = first + static_cast<int>(obstacles.polygons[p].vertices.size());
+    for (int id = first; id < last; ++id) nearest_to_edge(edges[id]);
   }
+  for (int id = world_->first_segment_edge(); id < static_cast<int>(edges.size()); ++id) nearest_to_edge(edges[id]);
   for (std::size_t c = 0; c < obstacles.circles.size(); ++c) {
     const Circle& o = obstacles.circles[c];
     const double lower = std::max(0.0, std::sqrt(box.squaredExteriorDistance(o.center)) - o.radius);
@@ -92,30 +81,22 @@ void PlanarChecker::nearest_to_circle(int k, double& best, Clearance& out) const
   const auto& edges = world_->edges();
   const auto& obstacles = world_->obstacles();
   Eigen::Vector2d q;
-  for (std::size_t p = 0; p < obstacles.polygons.size(); ++p) {
-    const double lower = std::sqrt(world_->polygon_boxes()[p].squaredExteriorDistance(c)) - r;
-    if (lower >= best) continue;
-    const int first = polygon_first_edge_[p];
-    const int last = first + static_cast<int>(obstacles.polygons[p].vertices.size());
-    for (int id = first; id < last; ++id) {
-      const PlanarEdge& e = edges[id];
-      const double d = std::sqrt(point_segment_distance_sq(c, e.a, e.b, &q)) - r;
-      if (d < best) {
-        best = std::max(0.0, d);
-        out.robot_point = lift(towards(c, r, q));
-        out.obstacle_point = lift(q);
-      }
-    }
-  }
-  for (int id = world_->first_segment_edge(); id < static_cast<int>(edges.size()); ++id) {
-    const PlanarEdge& e = edges[id];
+  const auto nearest_to_edge = [&](const PlanarEdge& e) {
     const double d = std::sqrt(point_segment_distance_sq(c, e.a, e.b, &q)) - r;
     if (d < best) {
       best = std::max(0.0, d);
       out.robot_point = lift(towards(c, r, q));
       out.obstacle_point = lift(q);
     }
+  };
+  for (std::size_t p = 0; p < obstacles.polygons.size(); ++p) {
+    const double lower = std::sqrt(world_->polygon_boxes()[p].squaredExteriorDistance(c)) - r;
+    if (lower >= best) continue;
+    const int first = polygon_first_edge_[p];
+    const int last = first + static_cast<int>(obstacles.polygons[p].vertices.size());
+    for (int id = first; id < last; ++id) nearest_to_edge(edges[id]);
   }
+  for (int id = world_->first_segment_edge(); id < static_cast<int>(edges.size()); ++id) nearest_to_edge(edges[id]);
   for (const Circle& o : obstacles.circles) {
     const double d = (c - o.center).norm() - r - o.radius;
     if (d < best) {
