@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "../tests/roadmap/test_worlds.hpp"
-#include "amp/roadmap/straight_line_planner.hpp"
+#include "amp/roadmap/local_planners/straight_line_planner.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "amp/core/counters.hpp"
 #include "amp/core/joint_space.hpp"
 #include "amp/core/se3_space.hpp"
-#include "amp/roadmap/grid_astar_planner.hpp"
+#include "amp/roadmap/competence/grid_astar_planner.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 
 #include "amp/core/joint_space.hpp"
 #include "amp/core/se3_space.hpp"
-#include "amp/roadmap/kd_tree_neighbors.hpp"
-#include "amp/roadmap/linear_neighbors.hpp"
+#include "amp/roadmap/neighbors/kd_tree_neighbors.hpp"
+#include "amp/roadmap/neighbors/linear_neighbors.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "amp/bench/experiment.hpp"
 #include "amp/core/path_file.hpp"
 #include "amp/roadmap/run.hpp"
-#include "amp/roadmap/uas_regions.hpp"
+#include "amp/roadmap/uas/uas_regions.hpp"
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"

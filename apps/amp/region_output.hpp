@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "amp/roadmap/uas_regions.hpp"
+#include "amp/roadmap/uas/uas_regions.hpp"
 
 namespace amp::world {
 struct Problem;

@@ -10,7 +10,7 @@
 #include "amp/core/counters.hpp"
 #include "amp/core/error.hpp"
 #include "amp/roadmap/planner.hpp"
-#include "amp/roadmap/uas_regions.hpp"
+#include "amp/roadmap/uas/uas_regions.hpp"
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"

@@ -3,10 +3,10 @@
 #include <stdexcept>
 
 #include "amp/core/error.hpp"
-#include "amp/roadmap/competence_prm.hpp"
-#include "amp/roadmap/hybrid_prm.hpp"
-#include "amp/roadmap/uas.hpp"
-#include "amp/roadmap/sampler_prms.hpp"
+#include "amp/roadmap/competence/competence_prm.hpp"
+#include "amp/roadmap/uas/hybrid_prm.hpp"
+#include "amp/roadmap/uas/uas.hpp"
+#include "amp/roadmap/catalog/sampler_prms.hpp"
 
 namespace amp::roadmap {
 

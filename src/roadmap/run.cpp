@@ -8,7 +8,7 @@
 #include "amp/core/edge_steps.hpp"
 #include "amp/core/error.hpp"
 #include "amp/core/stop_condition.hpp"
-#include "amp/roadmap/path_smoothing.hpp"
+#include "amp/roadmap/prm/path_smoothing.hpp"
 
 namespace amp::roadmap {
 

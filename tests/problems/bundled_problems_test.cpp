@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../support/path_checks.hpp"
+#include "support/path_checks.hpp"
 
 #include "amp/core/counters.hpp"
 #include "amp/roadmap/run.hpp"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "amp/roadmap/prm.hpp"
+#include "amp/roadmap/prm/prm.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -18,8 +18,8 @@
 #include "amp/core/error.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
-#include "../support/path_checks.hpp"
-#include "../support/time_allowance.hpp"
+#include "support/path_checks.hpp"
+#include "support/time_allowance.hpp"
 
 namespace amp::roadmap {
 namespace {

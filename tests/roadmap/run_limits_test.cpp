@@ -13,7 +13,7 @@
 
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
-#include "../support/time_allowance.hpp"
+#include "support/time_allowance.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "amp/roadmap/path_smoothing.hpp"
-#include "amp/roadmap/prm.hpp"
-#include "test_worlds.hpp"
+#include "amp/roadmap/prm/path_smoothing.hpp"
+#include "amp/roadmap/prm/prm.hpp"
+#include "roadmap/test_worlds.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -1,0 +1,35 @@
+#pragma once
+#include <memory>
+
+#include "amp/core/space.hpp"
+#include "amp/roadmap/samplers/sampler.hpp"
+#include "amp/roadmap/samplers/sampling_domain.hpp"
+#include "amp/world/validity_checker.hpp"
+
+namespace amp::roadmap {
+
+struct ObprmSamplerSettings {
+  int max_attempts = 100;  // colliding seeds tried (free draws included) before sample() gives up
+  int max_steps = 1000;    // steps walked along one ray before it is abandoned
+  void validate() const;   // throws ParameterError
+};
+
+// Obstacle-based sampling (Amato, Bayazit, Dale, Jones & Vallejo 1998, OBPRM): draw a colliding
+// configuration c, pick a random direction (towards a uniform state u) and walk from c at the space's
+// resolution until the first free configuration, which lies within one resolution step of the
+// obstacle's surface. A ray that reaches u, leaves the domain or exceeds max_steps is abandoned.
+class ObprmSampler final : public Sampler {
+ public:
+  ObprmSampler(const core::Space& space, const world::ValidityChecker& checker, ObprmSamplerSettings settings = {},
+               std::shared_ptr<const SamplingDomain> domain = nullptr);
+  bool sample(core::Rng& rng, State& out) override;
+
+ private:
+  const core::Space* space_;
+  const world::ValidityChecker* checker_;
+  ObprmSamplerSettings settings_;
+  std::shared_ptr<const SamplingDomain> domain_;
+  State c_, target_, q_;
+};
+
+}  // namespace amp::roadmap

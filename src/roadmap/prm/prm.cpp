@@ -1,0 +1,296 @@
+#include "amp/roadmap/prm/prm.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/roadmap/competence/astar.hpp"
+#include "amp/roadmap/local_planners/edge_certifier.hpp"
+#include "amp/roadmap/neighbors/kd_tree_neighbors.hpp"
+#include "amp/roadmap/prm/k_nearest_connection.hpp"
+#include "amp/roadmap/prm/path_smoothing.hpp"
+#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/local_planners/straight_line_planner.hpp"
+#include "amp/roadmap/samplers/uniform_sampler.hpp"
+
+namespace amp::roadmap {
+
+namespace {
+
+// Upper bound on the up-front reservation: a node limit of 10^9 must not reserve 10^9 states.
+constexpr std::size_t kMaxReservedNodes = 200000;
+constexpr int kMaxK = 1000;
+
+// One PRM run: the roadmap and the parts that grow it.
+class PrmRun {
+ public:
+  PrmRun(const PrmSettings& settings, const PrmParts& parts, const PlanningContext& ctx,
+         const core::StopCondition& stop)
+      : settings_(settings),
+        ctx_(ctx),
+        stop_(stop),
+        roadmap_(std::make_shared<Roadmap>()),
+        certifier_(ctx.space, ctx.checker, &stop) {
+    sampler_ = parts.sampler ? parts.sampler(ctx) : std::make_unique<UniformSampler>(ctx.space, ctx.checker);
+    local_planner_ = parts.local_planner ? parts.local_planner(ctx)
+                                         : std::make_unique<StraightLinePlanner>(ctx.space, ctx.checker, &stop);
+    if (parts.connection) {
+      connection_ = parts.connection(ctx);
+    } else {
+      auto nn = std::make_unique<KdTreeNeighbors>(ctx.space, &ctx.checker.counters());
+      nn->reserve(std::min(stop.node_limit(), kMaxReservedNodes));
+      connection_ = std::make_unique<KNearestConnection>(std::move(nn), static_cast<std::size_t>(settings.k));
+    }
+    if (parts.observer) observer_ = parts.observer(ctx, *sampler_);
+    const std::size_t k = static_cast<std::size_t>(settings.k);
+    if (parts.initial) {
+      *roadmap_ = *parts.initial;
+      for (VertexId v = 0; v < roadmap_->vertex_count(); ++v) connection_->add(v, roadmap_->state(v));
+    }
+    roadmap_->reserve(std::min(stop.node_limit(), kMaxReservedNodes), 2 * k);
+    neighbors_.reserve(k);
+  }
+
+  PlanResult run(core::Rng& rng) {
+    for (const State& s : ctx_.seeds) seed_ids_.push_back(insert(s, true));
+    State q;
+    PlanResult result;
+    for (;;) {
+      if (seeds_connected() && find_path(result.path)) {
+        result.status = core::PlanStatus::kSolved;
+        break;
+      }
+      const core::StopReason reason = stop_.check(roadmap_->vertex_count());
+      if (reason != core::StopReason::kNone) {
+        result.status = status_for(reason);
+        break;
+      }
+      if (sampler_->sample(rng, q)) {
+        insert(q, false);
+      } else {
+        ++failed_samples_;
+      }
+    }
+    if (result.status == core::PlanStatus::kSolved && settings_.smooth) smooth(rng, result.path);
+    result.nodes = roadmap_->vertex_count();
+    result.edges = roadmap_->edge_count();
+    result.components = roadmap_->component_count();
+    result.extra["failed_samples"] = static_cast<double>(failed_samples_);
+    if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_ - refused_edges_);
+    result.extra["certify_refused_edges"] = static_cast<double>(refused_edges_);
+    certifier_.report(result.extra);
+    if (settings_.smooth) result.extra["shortcuts"] = static_cast<double>(shortcuts_);
+    if (observer_) observer_->report(result.extra);
+    local_planner_->report(result.extra);
+    result.roadmap = roadmap_;
+    return result;
+  }
+
+ private:
+  // Adds q and tries its connection candidates (lazy: adds them unchecked). With an observer, also
+  // counts the distinct components q joins: an edge to a vertex not yet in q's component joins one
+  // more (union-find queries only: the run's CD calls and results are unchanged).
+  VertexId insert(const State& q, bool seed) {
+    const VertexId v = roadmap_->add_vertex(q);
+    connection_->candidates(*roadmap_, v, neighbors_);
+    Insertion info{v, seed, 0, 0, 0};
+    for (const Neighbor& n : neighbors_) {
+      if (settings_.skip_same_component && roadmap_->same_component(v, n.index)) continue;
+      ++info.attempts;
+      const bool joins = observer_ && !roadmap_->same_component(v, n.index);
+      if (settings_.lazy) {
+        roadmap_->add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
+      } else if (local_planner_->connect_edge(q, roadmap_->state(n.index),
+                                              EdgeRequest{v, n.index, roadmap_->vertex_count()}) &&
+                 (!certify_all() || certify_edge(v, n.index))) {
+        roadmap_->add_edge(v, n.index, n.distance, certify_all() ? EdgeCheck::kCertified : EdgeCheck::kValid);
+      } else {
+        continue;
+      }
+      ++info.successes;
+      if (joins) ++info.components_joined;
+    }
+    connection_->add(v, q);
+    if (observer_) observer_->inserted(*roadmap_, info);
+    return v;
+  }
+
+  bool seeds_connected() const {
+    for (std::size_t i = 1; i < seed_ids_.size(); ++i) {
+      if (!roadmap_->same_component(seed_ids_[0], seed_ids_[i])) return false;
+    }
+    return true;
+  }
+
+  // Vertex path seed 0 -> seed 1 -> ...; segment_starts_ marks where each seed's leg begins.
+  bool search_all(std::vector<VertexId>& ids) {
+    ids.assign(1, seed_ids_[0]);
+    segment_starts_.assign(1, 0);
+    for (std::size_t i = 1; i < seed_ids_.size(); ++i) {
+      if (!astar_.search(*roadmap_, ctx_.space, seed_ids_[i - 1], seed_ids_[i], leg_)) return false;
+      ids.insert(ids.end(), leg_.begin() + 1, leg_.end());
+      segment_starts_.push_back(ids.size() - 1);
+    }
+    return true;
+  }
+
+  bool certify_all() const { return ctx_.edge_check == core::EdgeCheckMode::kCertified; }
+
+  // Certifies the edge's whole motion: the local planner's waypoints between the two vertices and
+  // the straight segments that join them. Certification is query work when it runs on a path.
+  bool certify_edge(VertexId a, VertexId b) {
+    edge_states_.clear();
+    append_waypoints(a, b, edge_states_);
+    const State* from = &roadmap_->state(a);
+    for (const State& w : edge_states_) {
+      if (!certifier_.certify(*from, w)) return false;
+      from = &w;
+    }
+    return certifier_.certify(*from, roadmap_->state(b));
+  }
+
+  // A* through the seeds, then every edge of the candidate path is checked (Lazy PRM: its
+  // unchecked edges at the space's resolution) and certified, in order; at the first that fails it
+  // is removed and the search repeated. False when the seeds fall apart.
+  bool find_path(std::vector<State>& path) {
+    std::vector<VertexId> ids;
+    for (;;) {
+      if (!seeds_connected() || !search_all(ids)) return false;
+      bool valid = true;
+      for (std::size_t i = 1; i < ids.size(); ++i) {
+        const VertexId a = ids[i - 1], b = ids[i];
+        const EdgeCheck check = roadmap_->edge_check(a, b);
+        if (check == EdgeCheck::kCertified) continue;
+        if (check == EdgeCheck::kUnchecked && !local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
+          valid = false;
+        } else {
+          const core::Phase phase = ctx_.checker.counters().phase();
+          ctx_.checker.counters().set_phase(core::Phase::kQuery);
+          valid = certify_edge(a, b);
+          ctx_.checker.counters().set_phase(phase);
+          if (!valid) ++refused_edges_;
+        }
+        if (!valid) {
+          roadmap_->remove_edge(a, b);
+          ++removed_edges_;
+          break;
+        }
+        roadmap_->mark(a, b, EdgeCheck::kCertified);
+      }
+      if (valid) break;
+      if (stop_.should_stop(roadmap_->vertex_count())) return false;  // the main loop reports why
+    }
+    path.clear();
+    std::size_t next_seed = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (i > 0) append_waypoints(ids[i - 1], ids[i], path);
+      // segment_starts_ now counts in path states, waypoints included.
+      if (next_seed < segment_starts_.size() && segment_starts_[next_seed] == i) segment_starts_[next_seed++] = path.size();
+      path.push_back(roadmap_->state(ids[i]));
+    }
+    return true;
+  }
+
+  // The local planner's states between a and b (none for straight edges). Each edge was made by
+  // connect_edge(newer vertex, older vertex), so it is asked in that direction; any CD calls this
+  // takes are query work.
+  void append_waypoints(VertexId a, VertexId b, std::vector<State>& path) {
+    core::Counters& counters = ctx_.checker.counters();
+    const core::Phase phase = counters.phase();
+    counters.set_phase(core::Phase::kQuery);
+    const VertexId newer = std::max(a, b), older = std::min(a, b);
+    local_planner_->edge_waypoints(roadmap_->state(newer), roadmap_->state(older),
+                                   EdgeRequest{newer, older, roadmap_->vertex_count()}, waypoints_);
+    if (newer == a) {
+      path.insert(path.end(), waypoints_.begin(), waypoints_.end());
+    } else {
+      path.insert(path.end(), waypoints_.rbegin(), waypoints_.rend());
+    }
+    counters.set_phase(phase);
+  }
+
+  // Shortcuts each seed-to-seed leg separately so that the path still passes through every seed.
+  void smooth(core::Rng& rng, std::vector<State>& path) {
+    core::Counters& counters = ctx_.checker.counters();
+    const core::Phase phase = counters.phase();  // kPlanning, or kTraining inside a learner
+    counters.set_phase(core::Phase::kQuery);
+    std::vector<State> out, leg;
+    for (std::size_t s = 1; s < segment_starts_.size(); ++s) {
+      leg.assign(path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s - 1]),
+                 path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s]) + 1);
+      CertifiedLocalPlanner shortcut(*local_planner_, certifier_);  // a shortcut is certified too
+      shortcuts_ += shortcut_path(shortcut, rng, settings_.smooth_attempts, leg, &stop_);
+      out.insert(out.end(), leg.begin() + (out.empty() ? 0 : 1), leg.end());
+    }
+    if (segment_starts_.size() < 2) out = path;  // a single seed: nothing to smooth
+    path = std::move(out);
+    counters.set_phase(phase);
+  }
+
+  const PrmSettings& settings_;
+  const PlanningContext& ctx_;
+  const core::StopCondition& stop_;
+  std::shared_ptr<Roadmap> roadmap_;
+  std::unique_ptr<Sampler> sampler_;
+  std::unique_ptr<LocalPlanner> local_planner_;
+  std::unique_ptr<ConnectionStrategy> connection_;
+  std::unique_ptr<InsertionObserver> observer_;
+  EdgeCertifier certifier_;
+  AStar astar_;
+  std::vector<Neighbor> neighbors_;
+  std::vector<VertexId> seed_ids_;
+  std::vector<VertexId> leg_;
+  std::vector<State> waypoints_;
+  std::vector<State> edge_states_;
+  std::vector<std::size_t> segment_starts_;
+  std::uint64_t failed_samples_ = 0;
+  std::uint64_t removed_edges_ = 0;
+  std::uint64_t refused_edges_ = 0;  // removed because certification failed
+  int shortcuts_ = 0;
+};
+
+}  // namespace
+
+void PrmSettings::validate() const {
+  if (k < 1 || k > kMaxK) {
+    throw ParameterError("prm: k must be in [1, " + std::to_string(kMaxK) + "], got " + std::to_string(k));
+  }
+  if (smooth_attempts < 0) {
+    throw ParameterError("prm: smooth_attempts must be >= 0, got " + std::to_string(smooth_attempts));
+  }
+}
+
+Prm::Prm(PrmSettings settings, PrmParts parts) : settings_(settings), parts_(std::move(parts)) {
+  settings_.validate();
+}
+
+PlanResult Prm::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
+  check_seeds(ctx);
+  return PrmRun(settings_, parts_, ctx, stop).run(rng);
+}
+
+void register_prm(PlannerRegistry& registry) {
+  const PrmSettings d;
+  PlannerInfo info{
+      "prm",
+      "probabilistic roadmap (Kavraki et al. 1996); lazy=true gives Lazy PRM (Bohlin & Kavraki 2000)",
+      {
+          {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
+          {"lazy", ParamType::kBool, d.lazy, 0, 1, {}, "check edges only when on a candidate path"},
+          {"smooth", ParamType::kBool, d.smooth, 0, 1, {}, "shortcut the solution path"},
+          {"smooth_attempts", ParamType::kInteger, d.smooth_attempts, 0, 1e6, {}, "shortcut attempts per leg"},
+          {"skip_same_component", ParamType::kBool, d.skip_same_component, 0, 1, {},
+           "do not try neighbours already in the new node's component"},
+      }};
+  registry.add(std::move(info), [](const Params& p) {
+    PrmSettings s;
+    s.k = static_cast<int>(p.integer("k"));
+    s.lazy = p.boolean("lazy");
+    s.smooth = p.boolean("smooth");
+    s.smooth_attempts = static_cast<int>(p.integer("smooth_attempts"));
+    s.skip_same_component = p.boolean("skip_same_component");
+    return std::make_unique<Prm>(s);
+  });
+}
+
+}  // namespace amp::roadmap
