@@ -10,7 +10,7 @@
 #include "amp/bench/experiment.hpp"
 #include "amp/bench/merge.hpp"
 #include "amp/core/error.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "mpi_session.hpp"
@@ -76,7 +76,7 @@ void print_planners() {
     const auto& info = registry.info(name);
     std::cout << name << "  " << info.help << '\n';
     for (const auto& p : info.params) {
-      std::cout << "    " << p.name << " (" << roadmap::to_string(p.type) << ", default "
+      std::cout << "    " << p.name << " (" << core::to_string(p.type) << ", default "
                 << p.default_value.to_string();
       if (p.type == roadmap::ParamType::kInteger || p.type == roadmap::ParamType::kReal) {
         std::cout << ", range [" << p.min << ", " << p.max << "]";

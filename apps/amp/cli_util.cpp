@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 #include "amp/core/error.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/world/problem.hpp"
 
 namespace amp::cli {

@@ -6,7 +6,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "amp/world/yaml_fields.hpp"

@@ -9,7 +9,7 @@
 #include "amp/bench/runs_csv.hpp"
 #include "amp/core/error.hpp"
 #include "amp/viz/scene_renderer.hpp"
-#include "amp/viz/svg_canvas.hpp"
+#include "amp/viz/xml_escape.hpp"
 #include "report_page.hpp"
 #include "report_text.hpp"
 

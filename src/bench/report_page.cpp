@@ -6,9 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "amp/bench/histogram.hpp"
+#include "amp/stats/histogram.hpp"
 #include "amp/viz/charts.hpp"
-#include "amp/viz/svg_canvas.hpp"
+#include "amp/viz/xml_escape.hpp"
 #include "report_text.hpp"
 
 namespace amp::bench::report_page {
@@ -22,7 +22,7 @@ using Json = nlohmann::json;
 // Tableau 10: distinct on screen and in print, and the first few stay apart for the colour-blind.
 constexpr const char* kPalette[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
                                     "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
-constexpr std::size_t kMaxBins = 30;  // more bars than this are noise at 270 px
+constexpr std::size_t kMaxChartBins = 30;  // more bars than this are noise at 270 px
 constexpr int kBoxWidthPx = 470, kBoxHeightPx = 330;
 constexpr int kHistWidthPx = 270, kHistHeightPx = 150;
 
@@ -80,7 +80,7 @@ bool heavy_tailed(const std::vector<std::vector<double>>& cost) {
 }
 
 // Equal-width bins over the pooled costs (in log10 when `log`), as many as Freedman-Diaconis asks
-// for the pooled sample, so every planner's histogram shares them.
+// for the pooled sample, so every planner's histogram shares them (counted by stats::bin_counts).
 std::vector<double> shared_edges(const std::vector<std::vector<double>>& cost, bool log) {
   std::vector<double> pooled;
   for (const auto& g : cost) {
@@ -89,30 +89,18 @@ std::vector<double> shared_edges(const std::vector<std::vector<double>>& cost, b
   if (pooled.empty()) return {};
   const auto [mn, mx] = std::minmax_element(pooled.begin(), pooled.end());
   double lo = *mn, hi = *mx;
-  std::size_t bins = std::clamp<std::size_t>(bin_count(pooled, BinRule::kFreedmanDiaconis), 1, kMaxBins);
-  if (hi == lo) {  // one value: one bin around it
+  // At least one: bin_count's size_t cast can give 0 when range / width exceeds 2^64.
+  std::size_t bins = std::max<std::size_t>(1, stats::bin_count(pooled, stats::BinRule::kFreedmanDiaconis, kMaxChartBins));
+  if (hi == lo) {  // one value: one bin around it (a fifth of a decade on a log axis)
     lo -= log ? 0.1 : 0.5;
     hi += log ? 0.1 : 0.5;
     bins = 1;
   }
-  std::vector<double> edges(bins + 1);
-  for (std::size_t i = 0; i <= bins; ++i) {
-    const double x = lo + (hi - lo) * static_cast<double>(i) / bins;
-    edges[i] = log ? std::pow(10.0, x) : x;
+  std::vector<double> edges = stats::equal_width_edges(lo, hi, bins);
+  if (log) {
+    for (double& x : edges) x = std::pow(10.0, x);
   }
-  edges.back() = log ? std::pow(10.0, hi) : hi;
   return edges;
-}
-
-std::vector<std::size_t> bin_counts(const std::vector<double>& values, const std::vector<double>& edges) {
-  std::vector<std::size_t> counts(edges.empty() ? 0 : edges.size() - 1, 0);
-  for (double v : values) {
-    if (counts.empty()) break;
-    const auto it = std::upper_bound(edges.begin(), edges.end(), v);
-    const auto i = std::clamp<std::ptrdiff_t>(it - edges.begin() - 1, 0, static_cast<std::ptrdiff_t>(counts.size()) - 1);
-    ++counts[static_cast<std::size_t>(i)];  // the last bin holds the maximum too
-  }
-  return counts;
 }
 
 }  // namespace
@@ -241,7 +229,7 @@ void charts(std::ostream& out, const Experiment& e, const std::vector<std::vecto
   std::vector<std::vector<std::size_t>> counts;
   double count_max = 1.0;
   for (const auto& g : cost) {
-    counts.push_back(bin_counts(g, edges));
+    counts.push_back(stats::bin_counts(g, edges));
     for (std::size_t k : counts.back()) count_max = std::max(count_max, static_cast<double>(k));
   }
   for (std::size_t c = 0; c < series.size(); ++c) {

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "amp/viz/svg_canvas.hpp"
+#include "amp/viz/xml_escape.hpp"
 
 namespace amp::bench::report_text {
 

@@ -4,13 +4,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "amp/bench/anova.hpp"
-#include "amp/bench/descriptive.hpp"
-#include "amp/bench/histogram.hpp"
-#include "amp/bench/kruskal_wallis.hpp"
-#include "amp/bench/levene_test.hpp"
-#include "amp/bench/regwq.hpp"
-#include "amp/bench/welch_anova.hpp"
+#include "amp/stats/anova.hpp"
+#include "amp/stats/descriptive.hpp"
+#include "amp/stats/histogram.hpp"
+#include "amp/stats/kruskal_wallis.hpp"
+#include "amp/stats/levene_test.hpp"
+#include "amp/stats/regwq.hpp"
+#include "amp/stats/welch_anova.hpp"
 
 namespace amp::bench {
 
@@ -20,35 +20,35 @@ namespace {
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json describe_json(const std::vector<double>& x) {
-  const Summary s = describe(x);
+  const stats::Summary s = stats::describe(x);
   nlohmann::json j = {{"n", s.n},          {"mean", num(s.mean)},     {"std", num(s.std_dev)},
                       {"cv_percent", num(s.cv_percent)}, {"min", num(s.min)}, {"q1", num(s.q1)},
                       {"median", num(s.median)},         {"q3", num(s.q3)},   {"max", num(s.max)}};
   if (!x.empty()) {
-    const Histogram h = histogram(x);
+    const stats::Histogram h = stats::histogram(x);
     j["histogram"] = {{"edges", h.edges}, {"counts", h.counts}};
   }
   return j;
 }
 
-nlohmann::json test_json(const TestResult& t) {
+nlohmann::json test_json(const stats::TestResult& t) {
   return {{"statistic", num(t.statistic)}, {"df1", num(t.df1)}, {"df2", num(t.df2)}, {"p_value", num(t.p_value)},
-          {"status", std::string(to_string(t.status))}};
+          {"status", std::string(stats::to_string(t.status))}};
 }
 
 nlohmann::json tests_json(const Experiment& e, const std::vector<GroupMetrics>& groups, double alpha) {
-  Groups cost;
+  stats::Groups cost;
   for (const auto& g : groups) cost.push_back(g.cd_calls);
   for (const auto& g : cost) {
     if (g.size() < 2) return {{"skipped", "every planner needs at least two runs"}};
   }
   nlohmann::json j;
   j["metric"] = "cd_calls";
-  j["levene_brown_forsythe"] = test_json(levene_test(cost, LeveneCenter::kMedian));
-  j["anova"] = test_json(one_way_anova(cost).test);
-  j["welch_anova"] = test_json(welch_anova(cost));
-  j["kruskal_wallis"] = test_json(kruskal_wallis(cost));
-  const RegwqResult r = regwq(cost, alpha);
+  j["levene_brown_forsythe"] = test_json(stats::levene_test(cost, stats::LeveneCenter::kMedian));
+  j["anova"] = test_json(stats::one_way_anova(cost).test);
+  j["welch_anova"] = test_json(stats::welch_anova(cost));
+  j["kruskal_wallis"] = test_json(stats::kruskal_wallis(cost));
+  const stats::RegwqResult r = stats::regwq(cost, alpha);
   nlohmann::json subsets = nlohmann::json::array();
   for (const auto& s : r.subsets) {
     nlohmann::json names = nlohmann::json::array();
@@ -59,10 +59,10 @@ nlohmann::json tests_json(const Experiment& e, const std::vector<GroupMetrics>& 
   for (std::size_t a = 0; a < groups.size(); ++a) {
     for (std::size_t b = a + 1; b < groups.size(); ++b) {
       pairs.push_back({{"a", e.planners[a].label}, {"b", e.planners[b].label},
-                       {"differs", r.status == TestStatus::kOk && r.differs[a][b]}});
+                       {"differs", r.status == stats::TestStatus::kOk && r.differs[a][b]}});
     }
   }
-  j["regwq"] = {{"alpha", alpha}, {"status", std::string(to_string(r.status))}, {"subsets", subsets},
+  j["regwq"] = {{"alpha", alpha}, {"status", std::string(stats::to_string(r.status))}, {"subsets", subsets},
                 {"pairs", pairs}, {"mse", num(r.mse)}, {"df_error", num(r.df_error)}};
   return j;
 }

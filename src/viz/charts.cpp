@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "amp/core/error.hpp"
+#include "amp/stats/descriptive.hpp"
 #include "amp/viz/svg_canvas.hpp"
 
 namespace amp::viz {
@@ -150,17 +151,12 @@ BoxStats box_stats(std::span<const double> values) {
     sum += v;
   }
   std::sort(x.begin(), x.end());
-  auto quantile = [&](double p) {  // Hyndman & Fan type 7
-    const double h = (x.size() - 1) * p;
-    const auto i = static_cast<std::size_t>(std::floor(h));
-    return i + 1 < x.size() ? x[i] + (h - i) * (x[i + 1] - x[i]) : x[i];
-  };
   BoxStats b;
   b.n = x.size();
   b.mean = sum / x.size();
-  b.q1 = quantile(0.25);
-  b.median = quantile(0.5);
-  b.q3 = quantile(0.75);
+  b.q1 = stats::quantile(x, 0.25);
+  b.median = stats::quantile(x, 0.5);
+  b.q3 = stats::quantile(x, 0.75);
   const double reach = kWhiskerIqr * (b.q3 - b.q1);
   b.whisker_low = b.q1;
   b.whisker_high = b.q3;

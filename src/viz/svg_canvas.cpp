@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iomanip>
 
+#include "amp/viz/xml_escape.hpp"
+
 namespace amp::viz {
 
 SvgCanvas::SvgCanvas(const Eigen::AlignedBox2d& world, int width_px, int margin_px, int footer_px)
@@ -98,21 +100,6 @@ std::string SvgCanvas::str() const {
       << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
       << body_.str() << "</svg>\n";
   return out.str();
-}
-
-std::string xml_escape(std::string_view s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 }  // namespace amp::viz

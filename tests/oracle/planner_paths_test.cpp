@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "ompl_app_problem.hpp"

@@ -7,7 +7,7 @@
 
 #include "amp/core/run_record.hpp"
 #include "amp/roadmap/parameters.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/roadmap.hpp"
 #include "amp/world/problem.hpp"
 

@@ -39,8 +39,8 @@ std::pair<double, double> nice_range(double lo, double hi, AxisScale scale, int 
 // Short tick text: 950, 99.75, 1.23k, 34k, 1.5M, 0.25, 2.5e-05. Never "nan": a non-finite value is "–".
 std::string compact_number(double v);
 
-// Tukey's box: type-7 quartiles (R's default, as bench::describe), whiskers at the most extreme data
-// within 1.5 IQR of the box, everything beyond them an outlier.
+// Tukey's box: type-7 quartiles (stats::quantile, R's default, as stats::describe), whiskers at the
+// most extreme data within 1.5 IQR of the box, everything beyond them an outlier.
 struct BoxStats {
   std::size_t n = 0;
   double q1 = 0.0, median = 0.0, q3 = 0.0, mean = 0.0;

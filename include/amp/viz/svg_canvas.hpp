@@ -60,7 +60,4 @@ class SvgCanvas {
   std::ostringstream body_;
 };
 
-// Escapes &, <, > and quotes for SVG/HTML text.
-std::string xml_escape(std::string_view s);
-
 }  // namespace amp::viz

@@ -1,14 +1,16 @@
-#include "amp/roadmap/catalog/sampler_prms.hpp"
-
+// The PRM variants that differ from `prm` only by their sampler, each reporting its node classes
+// (cc_create, cc_merge, cc_expand, cc_oversample), its distance `sampler_d` where it has one and
+// `sampler_distance_fallback` (1 when the robot has no diameter and 1% of the space extent stood in).
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "amp/roadmap/samplers/bridge_sampler.hpp"
 #include "amp/roadmap/samplers/gaussian_sampler.hpp"
 #include "amp/roadmap/prm/node_classifier.hpp"
 #include "amp/roadmap/samplers/obprm_sampler.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/prm/prm.hpp"
 #include "amp/roadmap/samplers/random_offset.hpp"
 
@@ -16,7 +18,6 @@ namespace amp::roadmap {
 
 namespace {
 
-constexpr int kMaxK = 1000;
 constexpr double kMaxAttempts = 1e6;
 constexpr double kMaxScale = 1e3;
 
@@ -26,7 +27,12 @@ SamplerDistance resolve(const PlanningContext& ctx, double d, double d_scale) {
   return sampler_distance(ctx.environment, ctx.space, d_scale);
 }
 
-ParamSpec k_spec() { return {"k", ParamType::kInteger, 10, 1, kMaxK, {}, "neighbours tried per new node"}; }
+ParamSpec k_spec() {  // prm's own
+  for (const ParamSpec& s : PrmSettings::schema().specs()) {
+    if (s.name == "k") return s;
+  }
+  throw std::logic_error("prm declares no k");
+}
 ParamSpec attempts_spec() {
   return {"max_attempts", ParamType::kInteger, 100, 1, kMaxAttempts, {}, "tries before a sample is given up"};
 }

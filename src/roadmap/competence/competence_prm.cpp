@@ -57,8 +57,6 @@ void CompetentLocalPlanner::report(std::map<std::string, double>& extra) const {
 
 namespace {
 
-constexpr int kMaxK = 1000;
-
 std::unique_ptr<CompetencePolicy> make_policy(CompetenceKind kind, double value) {
   switch (kind) {
     case CompetenceKind::kStatic:
@@ -84,9 +82,19 @@ const char* competence_parameter(CompetenceKind kind) {
   return kind == CompetenceKind::kStatic ? "o" : kind == CompetenceKind::kGlobal ? "s" : "n";
 }
 
+const core::SettingsSchema<CompetencePrmSettings>& CompetencePrmSettings::schema() {
+  using S = CompetencePrmSettings;
+  static const core::SettingsSchema<S> schema("competence prm", [] {
+    std::vector<core::SettingsField<S>> f{
+        core::integer_field<S>("k", &S::k, 1, kMaxNeighbours, "nearest vertices tried per connected component")};
+    for (auto& g : core::nested_fields<S>(GridAStarSettings::schema(), &S::grid)) f.push_back(std::move(g));
+    return f;
+  }());
+  return schema;
+}
+
 void CompetencePrmSettings::validate() const {
-  if (k < 1 || k > kMaxK) throw ParameterError("competence prm: k must be in [1, 1000], got " + std::to_string(k));
-  grid.validate();
+  schema().validate(*this);
   make_policy(kind, value);  // throws for a value outside its range
 }
 
@@ -109,47 +117,6 @@ PlanResult CompetencePrm::plan(const PlanningContext& ctx, const core::StopCondi
   PlanResult result = Prm(prm, std::move(parts)).plan(ctx, stop, rng);
   result.extra[competence_parameter(settings_.kind)] = value;
   return result;
-}
-
-void register_competence_prms(PlannerRegistry& registry) {
-  const GridAStarSettings g;
-  struct Form {
-    CompetenceKind kind;
-    const char* name;
-    const char* what;
-    double fallback, lo, hi;
-    const char* help;
-  };
-  const Form forms[] = {
-      {CompetenceKind::kStatic, "prm-c", "static competence O_th = o", 8, 1, 1e6, "O_th, fixed"},
-      {CompetenceKind::kGlobal, "prm-g", "global competence O_th = (S / s) * 32", 1000, 1, 1e9,
-       "roadmap size at which O_th = 32"},
-      {CompetenceKind::kLocal, "prm-l", "local competence O_th = 1 + n / r_s(v)", 0.1, 0.001, 1000,
-       "scale of O_th over a vertex's failure ratio"},
-  };
-  for (const Form& f : forms) {
-    const std::vector<ParamSpec> specs = {
-        {competence_parameter(f.kind), ParamType::kReal, f.fallback, f.lo, f.hi, {}, f.help},
-        {"k", ParamType::kInteger, 10, 1, kMaxK, {}, "nearest vertices tried per connected component"},
-        {"steps", ParamType::kInteger, g.steps, 1, 16000, {}, "A* grid steps per degree of freedom"},
-        {"a", ParamType::kInteger, g.g_weight, 0, 1000, {}, "A in f = A g + B h"},
-        {"b", ParamType::kInteger, g.h_weight, 1, 1000, {}, "B in f = A g + B h"},
-        {"max_cells", ParamType::kInteger, static_cast<double>(g.max_cells), 1, 1e9, {},
-         "cells checked per A* call before it gives up regardless of O_th"},
-    };
-    const std::string what = std::string("PRM with a bidirectional A* grid local planner (Isto 2003), ") + f.what;
-    registry.add(PlannerInfo{f.name, what, specs}, [f](const Params& p) -> std::unique_ptr<Planner> {
-      CompetencePrmSettings s;
-      s.kind = f.kind;
-      s.value = p.real(competence_parameter(f.kind));
-      s.k = static_cast<int>(p.integer("k"));
-      s.grid.steps = static_cast<int>(p.integer("steps"));
-      s.grid.g_weight = static_cast<int>(p.integer("a"));
-      s.grid.h_weight = static_cast<int>(p.integer("b"));
-      s.grid.max_cells = static_cast<std::size_t>(p.integer("max_cells"));
-      return std::make_unique<CompetencePrm>(s);
-    });
-  }
 }
 
 }  // namespace amp::roadmap

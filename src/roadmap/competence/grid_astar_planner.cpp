@@ -22,15 +22,15 @@ bool later(std::uint64_t a, std::uint64_t b) { return a > b; }
 
 }  // namespace
 
-void GridAStarSettings::validate() const {
-  if (steps < 1 || steps > kMaxSteps) {
-    throw ParameterError("grid: steps per degree of freedom must be in [1, " + std::to_string(kMaxSteps) + "], got " +
-                         std::to_string(steps));
-  }
-  if (g_weight < 0 || h_weight < 1 || g_weight > 1000 || h_weight > 1000) {
-    throw ParameterError("grid: need 0 <= A <= 1000 and 1 <= B <= 1000 in f = A g + B h");
-  }
-  if (max_cells < 1) throw ParameterError("grid: max_cells must be >= 1");
+const core::SettingsSchema<GridAStarSettings>& GridAStarSettings::schema() {
+  using S = GridAStarSettings;
+  static const core::SettingsSchema<S> schema(
+      "grid", {core::integer_field<S>("steps", &S::steps, 1, kMaxSteps, "A* grid steps per degree of freedom"),
+               core::integer_field<S>("a", &S::g_weight, 0, 1000, "A in f = A g + B h"),
+               core::integer_field<S>("b", &S::h_weight, 1, 1000, "B in f = A g + B h"),
+               core::integer_field<S>("max_cells", &S::max_cells, 1, 1e9,
+                                      "cells checked per A* call before it gives up regardless of O_th")});
+  return schema;
 }
 
 GridAStarPlanner::GridAStarPlanner(const core::Space& space, const world::ValidityChecker& checker,

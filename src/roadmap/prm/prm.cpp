@@ -4,12 +4,11 @@
 #include <string>
 
 #include "amp/core/error.hpp"
-#include "amp/roadmap/competence/astar.hpp"
+#include "amp/roadmap/prm/astar.hpp"
 #include "amp/roadmap/local_planners/edge_certifier.hpp"
 #include "amp/roadmap/neighbors/kd_tree_neighbors.hpp"
 #include "amp/roadmap/prm/k_nearest_connection.hpp"
 #include "amp/roadmap/prm/path_smoothing.hpp"
-#include "amp/roadmap/planner_registry.hpp"
 #include "amp/roadmap/local_planners/straight_line_planner.hpp"
 #include "amp/roadmap/samplers/uniform_sampler.hpp"
 
@@ -19,7 +18,6 @@ namespace {
 
 // Upper bound on the up-front reservation: a node limit of 10^9 must not reserve 10^9 states.
 constexpr std::size_t kMaxReservedNodes = 200000;
-constexpr int kMaxK = 1000;
 
 // One PRM run: the roadmap and the parts that grow it.
 class PrmRun {
@@ -251,13 +249,16 @@ class PrmRun {
 
 }  // namespace
 
-void PrmSettings::validate() const {
-  if (k < 1 || k > kMaxK) {
-    throw ParameterError("prm: k must be in [1, " + std::to_string(kMaxK) + "], got " + std::to_string(k));
-  }
-  if (smooth_attempts < 0) {
-    throw ParameterError("prm: smooth_attempts must be >= 0, got " + std::to_string(smooth_attempts));
-  }
+const core::SettingsSchema<PrmSettings>& PrmSettings::schema() {
+  using S = PrmSettings;
+  static const core::SettingsSchema<S> schema(
+      "prm", {core::integer_field<S>("k", &S::k, 1, kMaxNeighbours, "neighbours tried per new node"),
+              core::bool_field<S>("lazy", &S::lazy, "check edges only when on a candidate path"),
+              core::bool_field<S>("smooth", &S::smooth, "shortcut the solution path"),
+              core::integer_field<S>("smooth_attempts", &S::smooth_attempts, 0, 1e6, "shortcut attempts per leg"),
+              core::bool_field<S>("skip_same_component", &S::skip_same_component,
+                                  "do not try neighbours already in the new node's component")});
+  return schema;
 }
 
 Prm::Prm(PrmSettings settings, PrmParts parts) : settings_(settings), parts_(std::move(parts)) {
@@ -267,30 +268,6 @@ Prm::Prm(PrmSettings settings, PrmParts parts) : settings_(settings), parts_(std
 PlanResult Prm::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
   check_seeds(ctx);
   return PrmRun(settings_, parts_, ctx, stop).run(rng);
-}
-
-void register_prm(PlannerRegistry& registry) {
-  const PrmSettings d;
-  PlannerInfo info{
-      "prm",
-      "probabilistic roadmap (Kavraki et al. 1996); lazy=true gives Lazy PRM (Bohlin & Kavraki 2000)",
-      {
-          {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
-          {"lazy", ParamType::kBool, d.lazy, 0, 1, {}, "check edges only when on a candidate path"},
-          {"smooth", ParamType::kBool, d.smooth, 0, 1, {}, "shortcut the solution path"},
-          {"smooth_attempts", ParamType::kInteger, d.smooth_attempts, 0, 1e6, {}, "shortcut attempts per leg"},
-          {"skip_same_component", ParamType::kBool, d.skip_same_component, 0, 1, {},
-           "do not try neighbours already in the new node's component"},
-      }};
-  registry.add(std::move(info), [](const Params& p) {
-    PrmSettings s;
-    s.k = static_cast<int>(p.integer("k"));
-    s.lazy = p.boolean("lazy");
-    s.smooth = p.boolean("smooth");
-    s.smooth_attempts = static_cast<int>(p.integer("smooth_attempts"));
-    s.skip_same_component = p.boolean("skip_same_component");
-    return std::make_unique<Prm>(s);
-  });
 }
 
 }  // namespace amp::roadmap

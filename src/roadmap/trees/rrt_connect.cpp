@@ -10,7 +10,6 @@
 #include "amp/core/error.hpp"
 #include "amp/roadmap/local_planners/edge_certifier.hpp"
 #include "amp/roadmap/neighbors/kd_tree_neighbors.hpp"
-#include "amp/roadmap/planner_registry.hpp"
 #include "amp/roadmap/local_planners/straight_line_planner.hpp"
 
 namespace amp::roadmap {
@@ -332,10 +331,12 @@ class RrtConnectRun {
 
 }  // namespace
 
-void RrtConnectSettings::validate() const {
-  if (!(range >= 0.0) || !(range <= kMaxRange)) {
-    throw ParameterError("rrt-connect: range must be in [0, 1e12] (0 = default), got " + std::to_string(range));
-  }
+const core::SettingsSchema<RrtConnectSettings>& RrtConnectSettings::schema() {
+  using S = RrtConnectSettings;
+  static const core::SettingsSchema<S> schema(
+      "rrt-connect", {core::real_field<S>("range", &S::range, 0, kMaxRange,
+                                          "longest extension step (space metric); 0 = 0.2 x the space's maximum extent")});
+  return schema;
 }
 
 double effective_range(const RrtConnectSettings& settings, const core::Space& space) {
@@ -347,19 +348,6 @@ RrtConnect::RrtConnect(RrtConnectSettings settings) : settings_(settings) { sett
 PlanResult RrtConnect::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
   check_seeds(ctx);
   return RrtConnectRun(effective_range(settings_, ctx.space), ctx, stop).run(rng);
-}
-
-void register_rrt_connect(PlannerRegistry& registry) {
-  const RrtConnectSettings d;
-  PlannerInfo info{"rrt-connect",
-                   "bidirectional RRT, EXTEND one tree and CONNECT the other (Kuffner & LaValle 2000)",
-                   {{"range", ParamType::kReal, d.range, 0, kMaxRange, {},
-                     "longest extension step (space metric); 0 = 0.2 x the space's maximum extent"}}};
-  registry.add(std::move(info), [](const Params& p) {
-    RrtConnectSettings s;
-    s.range = p.real("range");
-    return std::make_unique<RrtConnect>(s);
-  });
 }
 
 }  // namespace amp::roadmap

@@ -6,20 +6,25 @@
 #include "amp/roadmap/samplers/bridge_sampler.hpp"
 #include "amp/roadmap/samplers/gaussian_sampler.hpp"
 #include "amp/roadmap/samplers/obprm_sampler.hpp"
-#include "amp/roadmap/planner_registry.hpp"
 #include "amp/roadmap/samplers/random_offset.hpp"
 #include "amp/roadmap/samplers/uniform_domain_sampler.hpp"
 
 namespace amp::roadmap {
 
-namespace {
-constexpr int kMaxK = 1000;
-constexpr double kMaxAlpha = 1000.0;
-}  // namespace
-
-void HybridPrmSettings::validate() const {
-  hybrid.validate();
-  if (k < 1 || k > kMaxK) throw ParameterError("hybrid-prm: k must be in [1, 1000], got " + std::to_string(k));
+const core::SettingsSchema<HybridPrmSettings>& HybridPrmSettings::schema() {
+  using S = HybridPrmSettings;
+  static const core::SettingsSchema<S> schema("hybrid-prm", [] {
+    std::vector<core::SettingsField<S>> f = core::nested_fields<S>(HybridSettings::schema(), &S::hybrid);
+    f.push_back(core::integer_field<S>("k", &S::k, 1, kMaxNeighbours, "neighbours tried per new node"));
+    f.push_back(core::bool_field<S>("bridge", &S::bridge, "add the bridge test as a fifth sampler"));
+    f.push_back(core::bool_field<S>(
+        "expansion", &S::expansion,
+        "add PRM's expansion step (a step from a node chosen by its failure ratio) as one more sampler"));
+    f.push_back(sequence_field<S>("how the samplers draw their start states: independent random, or a randomised "
+                                  "Halton sequence"));
+    return f;
+  }());
+  return schema;
 }
 
 std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
@@ -64,37 +69,6 @@ std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings) {
                                             std::map<std::string, double>{{"sampler_distance_fallback", fallback}});
   };
   return std::make_unique<Prm>(prm, std::move(parts));
-}
-
-void register_hybrid_prm(PlannerRegistry& registry) {
-  const HybridPrmSettings d;
-  PlannerInfo info{
-      "hybrid-prm",
-      "Hybrid PRM (Hsu, Sanchez-Ante & Sun 2005) over uniform, Gaussian r and 2r, OBPRM (+ bridge, expansion) "
-      "samplers, with UAS's structural reward",
-      {
-          {"gamma", ParamType::kReal, d.hybrid.gamma, 1e-6, 1, {}, "share of random sampler selection"},
-          {"alpha", ParamType::kReal, d.hybrid.alpha, 1e-6, kMaxAlpha, {}, "reward exp(-alpha v^2) of non-structural nodes"},
-          {"cost", ParamType::kChoice, "node", 0, 0, {"node", "sampling"},
-           "a sample's cost: CD calls to sample and connect it (node) or to sample it only"},
-          {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
-          {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
-          {"expansion", ParamType::kBool, d.expansion, 0, 1, {},
-           "add PRM's expansion step (a step from a node chosen by its failure ratio) as one more sampler"},
-          {"sequence", ParamType::kChoice, "random", 0, 0, {"random", "halton"},
-           "how the samplers draw their start states: independent random, or a randomised Halton sequence"},
-      }};
-  registry.add(std::move(info), [](const Params& p) -> std::unique_ptr<Planner> {
-    HybridPrmSettings s;
-    s.hybrid.gamma = p.real("gamma");
-    s.hybrid.alpha = p.real("alpha");
-    s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
-    s.k = static_cast<int>(p.integer("k"));
-    s.bridge = p.boolean("bridge");
-    s.expansion = p.boolean("expansion");
-    s.sequence = parse_draw_sequence(p.choice("sequence"));
-    return make_hybrid_prm(s);
-  });
 }
 
 }  // namespace amp::roadmap

@@ -9,13 +9,17 @@
 
 namespace amp::roadmap {
 
-void HybridSettings::validate() const {
-  if (!(gamma > 0.0 && gamma <= 1.0)) {
-    throw ParameterError("hybrid prm: gamma must be in (0, 1], got " + std::to_string(gamma));
-  }
-  if (!(alpha > 0.0) || !std::isfinite(alpha)) {
-    throw ParameterError("hybrid prm: alpha must be positive, got " + std::to_string(alpha));
-  }
+const core::SettingsSchema<HybridSettings>& HybridSettings::schema() {
+  using S = HybridSettings;
+  static const core::SettingsSchema<S> schema(
+      "hybrid prm",
+      {core::real_field<S>("gamma", &S::gamma, 1e-6, 1, "share of random sampler selection"),
+       core::real_field<S>("alpha", &S::alpha, 1e-6, 1000, "reward exp(-alpha v^2) of non-structural nodes"),
+       core::enum_field<S>("cost", &S::cost,
+                           std::vector<std::pair<std::string, SampleCost>>{{"node", SampleCost::kNode},
+                                                                           {"sampling", SampleCost::kSampling}},
+                           "a sample's cost: CD calls to sample and connect it (node) or to sample it only")});
+  return schema;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "amp/core/error.hpp"
+#include "amp/roadmap/prm/prm.hpp"
 #include "amp/roadmap/samplers/gaussian_sampler.hpp"
 #include "amp/roadmap/prm/insertion_observer.hpp"
 #include "amp/roadmap/neighbors/kd_tree_neighbors.hpp"
@@ -15,15 +16,23 @@ namespace amp::roadmap {
 
 namespace {
 constexpr int kMaxTrainingNodes = 100000;
-constexpr int kMaxTrainingK = 1000;
 }  // namespace
 
+const core::SettingsSchema<TrainingSettings>& TrainingSettings::schema() {
+  using S = TrainingSettings;
+  static const core::SettingsSchema<S> schema(
+      "uas", {core::integer_field<S>("training_nodes", &S::nodes, 2, kMaxTrainingNodes, "training roadmap size"),
+              core::integer_field<S>("training_k", &S::k, 1, kMaxNeighbours, "neighbours per training node"),
+              core::enum_field<S>(
+                  "training_visibility", &S::visibility,
+                  std::vector<std::pair<std::string, TrainingVisibility>>{{"insertion", TrainingVisibility::kInsertion},
+                                                                          {"all", TrainingVisibility::kAllAttempts}},
+                  "a training node's visibility: its own attempts at insertion, or all attempts it took part in")});
+  return schema;
+}
+
 void TrainingSettings::validate() const {
-  if (nodes < 2 || nodes > kMaxTrainingNodes) {
-    throw ParameterError("uas: training_nodes must be in [2, " + std::to_string(kMaxTrainingNodes) + "], got " +
-                         std::to_string(nodes));
-  }
-  if (k < 1 || k > kMaxTrainingK) throw ParameterError("uas: training_k must be in [1, 1000], got " + std::to_string(k));
+  schema().validate(*this);
   if (attempts_per_node < 1) throw ParameterError("uas: attempts_per_node must be >= 1");
 }
 

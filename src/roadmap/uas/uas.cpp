@@ -8,14 +8,12 @@
 #include "amp/core/error.hpp"
 #include "amp/learn/clusterer_choice.hpp"
 #include "amp/roadmap/uas/hybrid_prm.hpp"
-#include "amp/roadmap/planner_registry.hpp"
 #include "amp/roadmap/prm/prm.hpp"
 #include "amp/roadmap/samplers/sampling_domain.hpp"
 
 namespace amp::roadmap {
 
 namespace {
-constexpr int kMaxK = 1000;
 constexpr int kMaxM = 100000;
 
 double method_index(const std::string& method) {
@@ -26,11 +24,37 @@ double method_index(const std::string& method) {
 }
 }  // namespace
 
+const core::SettingsSchema<UasSettings>& UasSettings::schema() {
+  using S = UasSettings;
+  static const core::SettingsSchema<S> schema("uas", [] {
+    std::vector<core::SettingsField<S>> f = core::nested_fields<S>(RegionSettings::schema(), &S::regions);
+    f.push_back(core::integer_field<S>("m", &S::m, 1, kMaxM, "samples per region per round"));
+    f.push_back(core::enum_field<S>(
+        "schedule", &S::schedule,
+        std::vector<std::pair<std::string, RegionSchedule>>{{"weighted", RegionSchedule::kWeighted},
+                                                            {"round-robin", RegionSchedule::kRoundRobin},
+                                                            {"adaptive", RegionSchedule::kAdaptive}},
+        "next region: weighted by narrow training nodes, in turn (the paper), or by a bandit over regions"));
+    f.push_back(core::integer_field<S>("k", &S::k, 1, kMaxNeighbours, "neighbours tried per new node"));
+    for (auto& h : core::nested_fields<S>(HybridSettings::schema(), &S::hybrid)) f.push_back(std::move(h));
+    f.push_back(core::bool_field<S>("bridge", &S::bridge, "add the bridge test as a fifth sampler"));
+    f.push_back(core::bool_field<S>(
+        "expansion", &S::expansion,
+        "add PRM's expansion step (a step from a node chosen by its failure ratio) to every region"));
+    f.push_back(core::bool_field<S>("reuse_training", &S::reuse_training,
+                                    "start the planning roadmap from the training roadmap"));
+    f.push_back(core::bool_field<S>("whole_space_region", &S::whole_space_region,
+                                    "the whole space takes a turn as one more region (keeps every passage reachable)"));
+    f.push_back(sequence_field<S>(
+        "how the regions draw their start states: independent random, or a randomised Halton sequence"));
+    return f;
+  }());
+  return schema;
+}
+
 void UasSettings::validate() const {
-  regions.validate();
-  hybrid.validate();
-  if (m < 1 || m > kMaxM) throw ParameterError("uas: m must be in [1, 100000], got " + std::to_string(m));
-  if (k < 1 || k > kMaxK) throw ParameterError("uas: k must be in [1, 1000], got " + std::to_string(k));
+  schema().validate(*this);
+  regions.training.validate();  // attempts_per_node, which is not a parameter
 }
 
 namespace {
@@ -208,65 +232,6 @@ PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop
   const double reused = settings_.reuse_training ? static_cast<double>(model.training.size()) : 0.0;
   result.extra["planning_nodes"] = static_cast<double>(result.nodes) - reused;
   return result;
-}
-
-void register_uas(PlannerRegistry& registry) {
-  const UasSettings d;
-  std::vector<std::string> names(std::begin(learn::kClusteringNames), std::end(learn::kClusteringNames));
-  PlannerInfo info{
-      "uas",
-      "UAS (unsupervised adaptive strategy): regions by clustering a training roadmap, Hybrid PRM per "
-      "region in round robin",
-      {
-          {"clustering", ParamType::kChoice, d.regions.clustering, 0, 0, names,
-           "region identification: kmeans, ward, pgmeans, or auto (highest silhouette)"},
-          {"training_nodes", ParamType::kInteger, d.regions.training.nodes, 2, 100000, {}, "training roadmap size"},
-          {"training_k", ParamType::kInteger, d.regions.training.k, 1, kMaxK, {}, "neighbours per training node"},
-          {"training_visibility", ParamType::kChoice, "insertion", 0, 0, {"insertion", "all"},
-           "a training node's visibility: its own attempts at insertion, or all attempts it took part in"},
-          {"region_margin", ParamType::kReal, d.regions.margin, 0, 100, {}, "box growth per side, in robot sizes"},
-          {"m", ParamType::kInteger, d.m, 1, kMaxM, {}, "samples per region per round"},
-          {"schedule", ParamType::kChoice, "weighted", 0, 0, {"weighted", "round-robin", "adaptive"},
-           "next region: weighted by narrow training nodes, in turn (the paper), or by a bandit over regions"},
-          {"k", ParamType::kInteger, d.k, 1, kMaxK, {}, "neighbours tried per new node"},
-          {"gamma", ParamType::kReal, d.hybrid.gamma, 1e-6, 1, {}, "share of random sampler selection"},
-          {"alpha", ParamType::kReal, d.hybrid.alpha, 1e-6, 1000, {}, "reward exp(-alpha v^2) of non-structural nodes"},
-          {"cost", ParamType::kChoice, "node", 0, 0, {"node", "sampling"},
-           "a sample's cost: CD calls to sample and connect it (node) or to sample it only"},
-          {"bridge", ParamType::kBool, d.bridge, 0, 1, {}, "add the bridge test as a fifth sampler"},
-          {"expansion", ParamType::kBool, d.expansion, 0, 1, {},
-           "add PRM's expansion step (a step from a node chosen by its failure ratio) to every region"},
-          {"reuse_training", ParamType::kBool, d.reuse_training, 0, 1, {},
-           "start the planning roadmap from the training roadmap"},
-          {"whole_space_region", ParamType::kBool, d.whole_space_region, 0, 1, {},
-           "the whole space takes a turn as one more region (keeps every passage reachable)"},
-          {"sequence", ParamType::kChoice, "random", 0, 0, {"random", "halton"},
-           "how the regions draw their start states: independent random, or a randomised Halton sequence"},
-      }};
-  registry.add(std::move(info), [](const Params& p) -> std::unique_ptr<Planner> {
-    UasSettings s;
-    s.regions.clustering = p.choice("clustering");
-    s.regions.training.nodes = static_cast<int>(p.integer("training_nodes"));
-    s.regions.training.k = static_cast<int>(p.integer("training_k"));
-    s.regions.training.visibility = p.choice("training_visibility") == "all" ? TrainingVisibility::kAllAttempts
-                                                                           : TrainingVisibility::kInsertion;
-    s.regions.margin = p.real("region_margin");
-    s.m = static_cast<int>(p.integer("m"));
-    const std::string& schedule = p.choice("schedule");
-    s.schedule = schedule == "adaptive"   ? RegionSchedule::kAdaptive
-                 : schedule == "weighted" ? RegionSchedule::kWeighted
-                                          : RegionSchedule::kRoundRobin;
-    s.k = static_cast<int>(p.integer("k"));
-    s.hybrid.gamma = p.real("gamma");
-    s.hybrid.alpha = p.real("alpha");
-    s.hybrid.cost = p.choice("cost") == "node" ? SampleCost::kNode : SampleCost::kSampling;
-    s.bridge = p.boolean("bridge");
-    s.expansion = p.boolean("expansion");
-    s.reuse_training = p.boolean("reuse_training");
-    s.whole_space_region = p.boolean("whole_space_region");
-    s.sequence = parse_draw_sequence(p.choice("sequence"));
-    return std::make_unique<Uas>(std::move(s));
-  });
 }
 
 }  // namespace amp::roadmap

@@ -14,16 +14,27 @@
 namespace amp::roadmap {
 
 namespace {
-constexpr double kMaxMargin = 100.0;
 constexpr double kPointRobotExtentFraction = 0.01;
 }  // namespace
 
+const core::SettingsSchema<RegionSettings>& RegionSettings::schema() {
+  using S = RegionSettings;
+  static const core::SettingsSchema<S> schema("uas", [] {
+    std::vector<core::SettingsField<S>> f;
+    f.push_back(core::choice_field<S>("clustering", &S::clustering,
+                                      std::vector<std::string>(std::begin(learn::kClusteringNames),
+                                                               std::end(learn::kClusteringNames)),
+                                      "region identification: kmeans, ward, pgmeans, or auto (highest silhouette)"));
+    for (auto& t : core::nested_fields<S>(TrainingSettings::schema(), &S::training)) f.push_back(std::move(t));
+    f.push_back(core::real_field<S>("region_margin", &S::margin, 0, 100, "box growth per side, in robot sizes"));
+    return f;
+  }());
+  return schema;
+}
+
 void RegionSettings::validate() const {
+  schema().validate(*this);
   training.validate();
-  learn::make_clusterer(clustering);  // throws for an unknown name
-  if (!(margin >= 0.0 && margin <= kMaxMargin)) {
-    throw ParameterError("uas: region_margin must be in [0, 100], got " + std::to_string(margin));
-  }
 }
 
 std::vector<ClusterStats> cluster_stats(const std::vector<double>& visibility, const std::vector<int>& labels, int c) {

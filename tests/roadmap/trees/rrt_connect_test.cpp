@@ -11,7 +11,7 @@
 #include "support/path_checks.hpp"
 
 #include "amp/core/joint_space.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
 

@@ -11,7 +11,7 @@
 #include "support/path_checks.hpp"
 
 #include "amp/core/error.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/roadmap/uas/training_roadmap.hpp"
 #include "amp/roadmap/uas/uas_regions.hpp"

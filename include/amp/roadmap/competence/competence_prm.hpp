@@ -7,7 +7,7 @@
 #include "amp/roadmap/competence/competence_policy.hpp"
 #include "amp/roadmap/competence/grid_astar_planner.hpp"
 #include "amp/roadmap/planner.hpp"
-#include "amp/roadmap/planner_registry.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 
 namespace amp::roadmap {
 
@@ -45,6 +45,8 @@ struct CompetencePrmSettings {
   double value = 0.1;
   int k = 10;
   GridAStarSettings grid;
+  // k and the grid's fields; `value` is checked by its policy, its range is the catalog's per kind.
+  static const core::SettingsSchema<CompetencePrmSettings>& schema();
   void validate() const;  // throws ParameterError
 };
 
@@ -62,7 +64,5 @@ class CompetencePrm final : public Planner {
   CompetencePrmSettings settings_;
 };
 
-// prm-c, prm-g and prm-l.
-void register_competence_prms(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap

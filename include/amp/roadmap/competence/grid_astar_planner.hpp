@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "amp/core/settings_schema.hpp"
 #include "amp/core/space.hpp"
 #include "amp/core/stop_condition.hpp"
 #include "amp/roadmap/competence/grid_chart.hpp"
@@ -21,7 +22,9 @@ struct GridAStarSettings {
   // Cells checked per call before the search gives up whatever its competence; a safety net so
   // that an unlimited threshold cannot search 128^5 cells. Counted in the call's stats.
   std::size_t max_cells = 1000000;
-  void validate() const;  // throws ParameterError
+  // steps, a (g_weight), b (h_weight), max_cells, as the competence PRMs take them.
+  static const core::SettingsSchema<GridAStarSettings>& schema();
+  void validate() const { schema().validate(*this); }  // throws ParameterError
 };
 
 // What one search did.

@@ -2,6 +2,7 @@
 #include <functional>
 #include <memory>
 
+#include "amp/core/settings_schema.hpp"
 #include "amp/roadmap/prm/connection_strategy.hpp"
 #include "amp/roadmap/prm/insertion_observer.hpp"
 #include "amp/roadmap/local_planners/local_planner.hpp"
@@ -9,6 +10,9 @@
 #include "amp/roadmap/samplers/sampler.hpp"
 
 namespace amp::roadmap {
+
+// The largest k (neighbours tried per new node) of every planner: beyond it, a roadmap is dense.
+inline constexpr int kMaxNeighbours = 1000;
 
 struct PrmSettings {
   int k = 10;  // neighbours tried per new vertex
@@ -21,7 +25,9 @@ struct PrmSettings {
   bool skip_same_component = false;
   bool smooth = false;       // shortcut the solution path
   int smooth_attempts = 100;  // shortcut attempts per seed-to-seed segment
-  void validate() const;     // throws ParameterError
+  // Names, ranges and help of the fields above, as `prm` takes them.
+  static const core::SettingsSchema<PrmSettings>& schema();
+  void validate() const { schema().validate(*this); }  // throws ParameterError
 };
 
 // The policies a PRM is composed of, made afresh for every plan() call from its context (each holds

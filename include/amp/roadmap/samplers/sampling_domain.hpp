@@ -9,6 +9,7 @@
 
 #include "amp/core/halton_sequence.hpp"
 #include "amp/core/rng.hpp"
+#include "amp/core/settings_schema.hpp"
 #include "amp/core/space.hpp"
 #include "amp/core/state.hpp"
 
@@ -23,6 +24,15 @@ namespace amp::roadmap {
 // a small passage is hit varies far less from run to run (docs/uas.md).
 enum class DrawSequence : std::uint8_t { kRandom = 0, kHalton = 1 };
 DrawSequence parse_draw_sequence(const std::string& name);  // "random" | "halton"; throws ParameterError
+
+// The `sequence` parameter of a planner whose Settings S have a DrawSequence `sequence`.
+template <class S>
+core::SettingsField<S> sequence_field(std::string help) {
+  return core::enum_field<S>(
+      "sequence", &S::sequence,
+      std::vector<std::pair<std::string, DrawSequence>>{{"random", DrawSequence::kRandom}, {"halton", DrawSequence::kHalton}},
+      std::move(help));
+}
 
 // Uniform states of a space, random or from a Halton sequence made on first use from the run's Rng.
 class StateDrawer {

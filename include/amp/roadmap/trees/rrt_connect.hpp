@@ -1,4 +1,5 @@
 #pragma once
+#include "amp/core/settings_schema.hpp"
 #include "amp/core/space.hpp"
 #include "amp/roadmap/planner.hpp"
 
@@ -8,7 +9,8 @@ struct RrtConnectSettings {
   // Longest extension step, in the space's metric; 0 takes OMPL's default (kDefaultRangeFraction of
   // the space's maximum extent).
   double range = 0.0;
-  void validate() const;  // throws ParameterError unless range >= 0 and finite
+  static const core::SettingsSchema<RrtConnectSettings>& schema();
+  void validate() const { schema().validate(*this); }  // throws ParameterError unless range is in [0, 1e12]
 };
 
 // OMPL's default range: 0.2 x the space's maximum extent (RRTConnect::setup, maxDistance_).

@@ -10,7 +10,6 @@
 
 namespace amp::roadmap {
 
-class PlannerRegistry;
 
 struct HybridPrmSettings {
   HybridSettings hybrid;
@@ -18,7 +17,8 @@ struct HybridPrmSettings {
   bool bridge = false;  // add the bridge test as a fifth sampler
   bool expansion = false;  // add PRM's expansion step as one more sampler (ExpansionSampler)
   DrawSequence sequence = DrawSequence::kRandom;  // how the samplers' domain draws its states
-  void validate() const;
+  static const core::SettingsSchema<HybridPrmSettings>& schema();
+  void validate() const { schema().validate(*this); }  // throws ParameterError
 };
 
 // Which samplers make_uas_samplers adds beyond the paper's four, and how they draw.
@@ -44,7 +44,5 @@ std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
 // sampler_distance_fallback (1 when r = 0 and 1% of the extent stood in for it).
 std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings);
 
-// Adds `hybrid-prm` (parameters gamma, alpha, cost, k, bridge, sequence).
-void register_hybrid_prm(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap

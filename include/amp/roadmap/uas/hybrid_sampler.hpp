@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "amp/core/settings_schema.hpp"
 #include "amp/roadmap/prm/insertion_observer.hpp"
 #include "amp/roadmap/prm/node_classifier.hpp"
 #include "amp/roadmap/samplers/sampler.hpp"
@@ -28,7 +29,9 @@ struct HybridSettings {
   double gamma = 0.5;  // share of random selection (UAS: equal weight to past performance and chance)
   double alpha = 4.0;  // UAS reward exp(-alpha * v^2) for cc-expand / cc-oversample nodes
   SampleCost cost = SampleCost::kNode;
-  void validate() const;  // throws ParameterError
+  // gamma, alpha and cost, as hybrid-prm and uas take them.
+  static const core::SettingsSchema<HybridSettings>& schema();
+  void validate() const { schema().validate(*this); }  // throws ParameterError
 };
 
 // A sampler that learns from what its last sample did once PRM inserted it (Hybrid PRM; UAS, which

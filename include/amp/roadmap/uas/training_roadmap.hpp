@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "amp/core/settings_schema.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/core/stop_condition.hpp"
 #include "amp/roadmap/planner.hpp"
@@ -27,6 +28,8 @@ struct TrainingSettings {
   // Sampling attempts allowed per wanted node before the roadmap is declared empty-handed.
   int attempts_per_node = 50;
   TrainingVisibility visibility = TrainingVisibility::kInsertion;
+  // training_nodes, training_k, training_visibility, as uas takes them (attempts_per_node is internal).
+  static const core::SettingsSchema<TrainingSettings>& schema();
   void validate() const;  // throws ParameterError
 };
 

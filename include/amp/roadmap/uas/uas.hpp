@@ -12,7 +12,6 @@
 
 namespace amp::roadmap {
 
-class PlannerRegistry;
 
 // How UAS picks the region that draws the next m samples.
 enum class RegionSchedule : std::uint8_t {
@@ -46,7 +45,8 @@ struct UasSettings {
   bool whole_space_region = true;
   // How every region (and the whole-space region) draws its states; see DrawSequence.
   DrawSequence sequence = DrawSequence::kRandom;
-  void validate() const;   // throws ParameterError
+  static const core::SettingsSchema<UasSettings>& schema();
+  void validate() const;  // throws ParameterError
 };
 
 // Samples region by region, m at a time, each region by its own Hybrid PRM (sampler set restricted to
@@ -97,8 +97,5 @@ class Uas final : public Planner {
   UasSettings settings_;
 };
 
-// Adds `uas` (parameters clustering, training_nodes, training_k, m, k, gamma, alpha, cost, bridge,
-// region_margin, reuse_training).
-void register_uas(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap

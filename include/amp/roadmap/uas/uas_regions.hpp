@@ -33,6 +33,8 @@ struct RegionSettings {
   // measurement: at 0.5, UAS cost 1.16x Hybrid PRM's median on the Maze (Wilcoxon p = 0.004), and
   // at 0 it was 0.77-0.88x on the Hook and 0.82x on Walls (two seeds, 100 runs each; docs/uas.md).
   double margin = 0.0;
+  // clustering, the training fields and region_margin, as uas takes them.
+  static const core::SettingsSchema<RegionSettings>& schema();
   void validate() const;  // throws ParameterError (also for an unknown clustering name)
 };
 

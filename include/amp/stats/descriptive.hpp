@@ -1,0 +1,32 @@
+#pragma once
+#include <cstddef>
+#include <limits>
+#include <span>
+
+namespace amp::stats {
+
+// Descriptive statistics of one planner's run costs, the columns of the paper's Table 1 plus the
+// five-number summary drawn in box plots. With n = 0 every field but n is NaN; with n = 1 the
+// standard deviation and the coefficient of variation are NaN (as R's sd()).
+struct Summary {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  std::size_t n = 0;
+  double mean = kNaN;
+  double std_dev = kNaN;     // sample standard deviation (divisor n - 1)
+  double cv_percent = kNaN;  // 100 * std_dev / mean, as in Table 1; NaN when mean == 0
+  double min = kNaN;
+  double q1 = kNaN;          // quartiles by quantile() below (R's default, type 7)
+  double median = kNaN;
+  double q3 = kNaN;
+  double max = kNaN;
+};
+
+// Throws ParameterError if a value is not finite.
+Summary describe(std::span<const double> x);
+
+// Quantile of `sorted` (ascending) at probability prob in [0, 1], Hyndman & Fan (1996) type 7,
+// R's default: linear interpolation between order statistics at h = (n - 1) prob.
+// Throws ParameterError for an empty sample or prob outside [0, 1].
+double quantile(std::span<const double> sorted, double prob);
+
+}  // namespace amp::stats
