@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "amp/core/version.hpp"
 #include "amp/core/error.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
@@ -25,7 +26,7 @@ void print_error(const char* prefix, const char* what) {
 int main(int argc, char** argv) {
   CLI::App app{"amp: adaptive motion planning (PRM family, UAS, PGCS, policy search, SINS)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "amp 0.1.0");
+  app.set_version_flag("--version", std::string("amp ") + amp::core::kVersion);
   int exit_code = amp::cli::kExitOk;
   amp::cli::add_plan_command(app, exit_code);
   amp::cli::add_render_command(app, exit_code);

@@ -1,3 +1,4 @@
+#include "amp/core/version.hpp"
 #include "amp/bench/bench_runner.hpp"
 
 #include <chrono>
@@ -29,7 +30,7 @@ nlohmann::json manifest_of(const Experiment& e, const Shard& shard) {
           {"trials", e.trial_count()},
           {"runs", e.runs},
           {"time_limit_s", e.time_limit_s},
-          {"version", "AMP 0.1.0"}};
+          {"version", std::string("AMP ") + core::kVersion}};
 }
 
 // Checks that `dir` may receive this run's outputs, and creates it.

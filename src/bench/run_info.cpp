@@ -7,13 +7,13 @@
 #include <string>
 #include <thread>
 
+#include "amp/core/version.hpp"
 #include "amp/bench/trial_sink.hpp"
 
 namespace amp::bench {
 
 namespace {
 
-constexpr const char* kVersion = "AMP 0.1.0";
 constexpr std::size_t kHostNameMax = 256;
 
 std::string host_name() {
@@ -56,7 +56,7 @@ RunInfo current_run_info(int threads) {
   info.hostname = host_name();
   info.cpu_info = cpu_description();
   info.date = utc_now_iso8601();
-  info.version = kVersion;
+  info.version = std::string("AMP ") + core::kVersion;
   info.threads = threads;
   return info;
 }

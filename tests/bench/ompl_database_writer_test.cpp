@@ -1,3 +1,4 @@
+#include "amp/core/version.hpp"
 #include "amp/bench/ompl_database_writer.hpp"
 
 #include <gtest/gtest.h>
@@ -120,7 +121,7 @@ TEST(OmplDatabaseWriter, EnumsExperimentsAndConfigs) {
   EXPECT_EQ(exps[0].at("timelimit"), "r:5");
   EXPECT_EQ(exps[0].at("memorylimit"), "r:0");
   EXPECT_EQ(exps[0].at("seed"), "t:42");
-  EXPECT_EQ(exps[0].at("version"), "t:AMP 0.1.0");
+  EXPECT_EQ(exps[0].at("version"), std::string("t:AMP ") + core::kVersion);
   EXPECT_EQ(exps[0].at("hostname"), "t:testhost");
   EXPECT_EQ(exps[0].at("date"), "t:2024-01-02T03:04:05Z");
   EXPECT_EQ(exps[0].at("node_limit"), "i:1000");
@@ -176,7 +177,7 @@ TEST(CurrentRunInfo, NamesHostVersionDateAndThreads) {
   char host[256] = {};
   ASSERT_EQ(gethostname(host, sizeof host - 1), 0);
   EXPECT_EQ(info.hostname, host);
-  EXPECT_EQ(info.version, "AMP 0.1.0");
+  EXPECT_EQ(info.version, std::string("AMP ") + core::kVersion);
   EXPECT_EQ(info.threads, 3);
   EXPECT_TRUE(std::regex_match(info.date, std::regex(R"(\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}Z)"))) << info.date;
   EXPECT_NE(info.cpu_info.find("logical cores)"), std::string::npos) << info.cpu_info;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "amp/core/version.hpp"
 #include "amp/bench/experiment.hpp"
 #include "amp/bench/trial_sink.hpp"
 
@@ -110,7 +111,7 @@ inline RunInfo fixed_run_info() {
   info.hostname = "testhost";
   info.cpu_info = "Test CPU @ 1 GHz (2 logical cores)";
   info.date = "2024-01-02T03:04:05Z";
-  info.version = "AMP 0.1.0";
+  info.version = std::string("AMP ") + core::kVersion;
   info.threads = 2;
   return info;
 }

@@ -1,3 +1,4 @@
+#include "amp/core/version.hpp"
 #include "amp/bench/ompl_log_writer.hpp"
 
 #include <gtest/gtest.h>
@@ -42,7 +43,7 @@ TEST(OmplLogWriter, OneLogPerProblemInOmplsFormat) {
   EXPECT_EQ(files[1], dir.path / "logs" / "maze.log");
   const auto l = lines(test::read_text(files[0]));
   ASSERT_GT(l.size(), 30u);
-  EXPECT_EQ(l[0], "AMP version 0.1.0");
+  EXPECT_EQ(l[0], std::string("AMP version ") + core::kVersion);
   EXPECT_EQ(l[1], "Experiment corridor");
   EXPECT_EQ(l[2], "6 experiment properties");
   EXPECT_EQ(l[9], "Running on testhost");

@@ -1,6 +1,7 @@
 // report.html: one self-contained page that names every problem and planner, has a table row per
 // planner, draws SVG, says the tests in words, and never prints nan or null, even for planners
 // without runs, problems with one planner, or statistics that do not exist.
+#include "amp/core/version.hpp"
 #include "amp/bench/report.hpp"
 
 #include <unistd.h>
@@ -54,7 +55,7 @@ class ReportTest : public ::testing::Test {
     i.hostname = "test-host";
     i.cpu_info = "test CPU";
     i.date = "2024-01-02T03:04:05Z";
-    i.version = "AMP 0.1.0";
+    i.version = std::string("AMP ") + core::kVersion;
     i.threads = 2;
     return i;
   }

@@ -45,4 +45,20 @@ class Counters {
   std::atomic<std::uint8_t> phase_{static_cast<std::uint8_t>(Phase::kPlanning)};
 };
 
+// Counts into `phase` for its lifetime and restores the phase it found, also when an exception
+// leaves the scope.
+class PhaseScope {
+ public:
+  PhaseScope(Counters& counters, Phase phase) noexcept : counters_(counters), saved_(counters.phase()) {
+    counters_.set_phase(phase);
+  }
+  ~PhaseScope() { counters_.set_phase(saved_); }
+  PhaseScope(const PhaseScope&) = delete;
+  PhaseScope& operator=(const PhaseScope&) = delete;
+
+ private:
+  Counters& counters_;
+  Phase saved_;
+};
+
 }  // namespace amp::core

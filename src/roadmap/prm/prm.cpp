@@ -162,10 +162,10 @@ class PrmRun {
         if (check == EdgeCheck::kUnchecked && !local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
           valid = false;
         } else {
-          const core::Phase phase = ctx_.checker.counters().phase();
-          ctx_.checker.counters().set_phase(core::Phase::kQuery);
-          valid = certify_edge(a, b);
-          ctx_.checker.counters().set_phase(phase);
+          {
+            const core::PhaseScope query(ctx_.checker.counters(), core::Phase::kQuery);
+            valid = certify_edge(a, b);
+          }
           if (!valid) ++refused_edges_;
         }
         if (!valid) {
@@ -193,9 +193,7 @@ class PrmRun {
   // connect_edge(newer vertex, older vertex), so it is asked in that direction; any CD calls this
   // takes are query work.
   void append_waypoints(VertexId a, VertexId b, std::vector<State>& path) {
-    core::Counters& counters = ctx_.checker.counters();
-    const core::Phase phase = counters.phase();
-    counters.set_phase(core::Phase::kQuery);
+    const core::PhaseScope query(ctx_.checker.counters(), core::Phase::kQuery);
     const VertexId newer = std::max(a, b), older = std::min(a, b);
     local_planner_->edge_waypoints(roadmap_->state(newer), roadmap_->state(older),
                                    EdgeRequest{newer, older, roadmap_->vertex_count()}, waypoints_);
@@ -204,14 +202,12 @@ class PrmRun {
     } else {
       path.insert(path.end(), waypoints_.rbegin(), waypoints_.rend());
     }
-    counters.set_phase(phase);
   }
 
   // Shortcuts each seed-to-seed leg separately so that the path still passes through every seed.
   void smooth(core::Rng& rng, std::vector<State>& path) {
-    core::Counters& counters = ctx_.checker.counters();
-    const core::Phase phase = counters.phase();  // kPlanning, or kTraining inside a learner
-    counters.set_phase(core::Phase::kQuery);
+    // Back to kPlanning afterwards, or kTraining inside a learner.
+    const core::PhaseScope query(ctx_.checker.counters(), core::Phase::kQuery);
     std::vector<State> out, leg;
     for (std::size_t s = 1; s < segment_starts_.size(); ++s) {
       leg.assign(path.begin() + static_cast<std::ptrdiff_t>(segment_starts_[s - 1]),
@@ -222,7 +218,6 @@ class PrmRun {
     }
     if (segment_starts_.size() < 2) out = path;  // a single seed: nothing to smooth
     path = std::move(out);
-    counters.set_phase(phase);
   }
 
   const PrmSettings& settings_;

@@ -148,10 +148,10 @@ Uas::Uas(UasSettings settings) : settings_(std::move(settings)) { settings_.vali
 
 PlanResult Uas::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng& rng) {
   check_seeds(ctx);  // before training spends anything (Prm::plan checks them again: 2 CD calls)
-  core::Counters& counters = ctx.checker.counters();
-  counters.set_phase(core::Phase::kTraining);
-  RegionModel model = identify_regions(ctx, settings_.regions, stop, rng);
-  counters.set_phase(core::Phase::kPlanning);
+  RegionModel model = [&] {
+    const core::PhaseScope training(ctx.checker.counters(), core::Phase::kTraining);
+    return identify_regions(ctx, settings_.regions, stop, rng);
+  }();
 
   std::map<std::string, double> figures{
       {"training_nodes", static_cast<double>(model.training.size())},
