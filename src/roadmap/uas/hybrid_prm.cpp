@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "amp/roadmap/uas/hybrid_observer.hpp"
 #include "amp/core/error.hpp"
 #include "amp/roadmap/samplers/bridge_sampler.hpp"
 #include "amp/roadmap/samplers/gaussian_sampler.hpp"

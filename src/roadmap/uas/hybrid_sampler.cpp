@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "amp/roadmap/uas/hybrid_observer.hpp"
 #include "amp/core/error.hpp"
 #include "amp/roadmap/prm/node_classifier.hpp"
 

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <string>
 
+#include "amp/roadmap/uas/hybrid_observer.hpp"
 #include "amp/core/error.hpp"
 #include "amp/learn/clusterer_choice.hpp"
 #include "amp/roadmap/uas/hybrid_prm.hpp"

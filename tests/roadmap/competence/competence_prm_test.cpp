@@ -1,4 +1,5 @@
 #include "amp/roadmap/competence/competence_prm.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 
 #include <algorithm>
 #include <vector>

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "amp/core/settings_schema.hpp"
+#include "amp/roadmap/uas/adaptive_sampler.hpp"
 #include "amp/roadmap/prm/insertion_observer.hpp"
 #include "amp/roadmap/prm/node_classifier.hpp"
 #include "amp/roadmap/samplers/sampler.hpp"
@@ -32,19 +33,6 @@ struct HybridSettings {
   // gamma, alpha and cost, as hybrid-prm and uas take them.
   static const core::SettingsSchema<HybridSettings>& schema();
   void validate() const { schema().validate(*this); }  // throws ParameterError
-};
-
-// A sampler that learns from what its last sample did once PRM inserted it (Hybrid PRM; UAS, which
-// routes the reward to the region that drew the sample).
-class AdaptiveSampler : public Sampler {
- public:
-  // The last successful sample is now inserted; a call with nothing pending does nothing.
-  virtual void reward_last(const Insertion& insertion) = 0;
-  // Its per-run figures (PlanResult::extra).
-  virtual void report(std::map<std::string, double>& extra) const = 0;
-  // Every vertex the run inserts, seeds included, before reward_last: samplers that grow from the
-  // roadmap (the expansion step) learn their candidates here.
-  virtual void observe(const Roadmap& roadmap, const Insertion& insertion) = 0;
 };
 
 // One Hybrid PRM sampler set: a bandit over named samplers (Hsu, Sanchez-Ante & Sun 2005) rewarded by
@@ -101,19 +89,6 @@ class HybridSampler final : public AdaptiveSampler {
   std::uint64_t sampling_cd_calls_ = 0;  // the pending sample's own CD calls
   double last_reward_ = 0.0;
   std::uint64_t last_cd_calls_ = 0;
-};
-
-// Feeds every sampled insertion's reward to an AdaptiveSampler and counts node classes; reports both.
-class HybridObserver final : public InsertionObserver {
- public:
-  explicit HybridObserver(AdaptiveSampler& sampler, std::map<std::string, double> constants = {})
-      : sampler_(&sampler), classes_(std::move(constants)) {}
-  void inserted(const Roadmap& roadmap, const Insertion& insertion) override;
-  void report(std::map<std::string, double>& extra) const override;
-
- private:
-  AdaptiveSampler* sampler_;
-  NodeClassCounter classes_;
 };
 
 }  // namespace amp::roadmap
