@@ -51,6 +51,15 @@ class OmplCfg : public ::testing::Test {
     }
     write(name, obj);
   }
+  // A pentagonal prism from z0 to 0.5 as the world, a triangular prism 0.1 high as the robot.
+  Problem pentagon_problem(double z0) {
+    write_prism("pentagon.obj", pentagon, 0.5, z0);
+    write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
+    return load_ompl_cfg(write("p.cfg", "[problem]\nrobot = robot.obj\nworld = pentagon.obj\nstart.x = -5\n"
+                                        "start.y = -5\ngoal.x = 8\ngoal.y = 8\nvolume.min.x = -10\n"
+                                        "volume.min.y = -10\nvolume.max.x = 10\nvolume.max.y = 10\n"));
+  }
+  const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
   fs::path dir_;
 };
 
@@ -108,13 +117,7 @@ TEST_F(OmplCfg, TwoDimensionalProblemRunsOnThePlanarChecker) {
 // OMPL.app checks a 2-D problem in 3-D, surface against surface, with the robot at height 0: the
 // world is its surface within the robot's z slab, seen from above.
 TEST_F(OmplCfg, TwoDimensionalWorldIsTheSurfaceInTheRobotsSlab) {
-  const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
-  write_prism("pentagon.obj", pentagon, 0.5, -0.2);  // from below the robot to above it
-  write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
-  const fs::path cfg = write("p.cfg", "[problem]\nrobot = robot.obj\nworld = pentagon.obj\nstart.x = -5\nstart.y = -5\n"
-                                      "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
-                                      "volume.max.x = 10\nvolume.max.y = 10\n");
-  const Problem p = load_ompl_cfg(cfg);
+  const Problem p = pentagon_problem(-0.2);  // from below the robot to above it
   const Shapes2d walls = p.environment->obstacle_outline().shapes;
   // The caps lie outside the slab z 0..0.1. The vertical faces, clipped to it, lie on the sides (a
   // face's two triangles give the side and, or only, a stretch of it).
@@ -156,13 +159,7 @@ TEST_F(OmplCfg, TwoDimensionalWorldIsTheSurfaceInTheRobotsSlab) {
 // A cap in the plane of the robot's bottom face (z = 0) overlaps it wherever their shadows meet: its
 // fan's triangles merge into the pentagon, a region, and the sides on its edges go.
 TEST_F(OmplCfg, CapInTheRobotsPlaneIsOneRegion) {
-  const std::vector<Eigen::Vector2d> pentagon = {{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
-  write_prism("pentagon.obj", pentagon, 0.5);
-  write_prism("robot.obj", {{0, 0}, {0.2, 0}, {0, 0.2}}, 0.1);
-  const fs::path cfg = write("p.cfg", "[problem]\nrobot = robot.obj\nworld = pentagon.obj\nstart.x = -5\nstart.y = -5\n"
-                                      "goal.x = 8\ngoal.y = 8\nvolume.min.x = -10\nvolume.min.y = -10\n"
-                                      "volume.max.x = 10\nvolume.max.y = 10\n");
-  const Problem p = load_ompl_cfg(cfg);
+  const Problem p = pentagon_problem(0.0);
   const Shapes2d walls = p.environment->obstacle_outline().shapes;
   ASSERT_EQ(walls.polygons.size(), 1u);
   EXPECT_EQ(walls.polygons[0].vertices.size(), 5u);
