@@ -17,7 +17,7 @@ std::string_view to_string(PlanStatus s);
 // Throws ParameterError for an unknown name.
 PlanStatus plan_status_from_string(std::string_view s);
 
-// The flat record every run reports (SPEC section 0); `amp plan` prints it and `amp bench` writes
+// The flat record every run reports (docs/experiment-format.md); `amp plan` prints it and `amp bench` writes
 // one row of it per run.
 struct RunRecord {
   std::string planner;

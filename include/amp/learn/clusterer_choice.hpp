@@ -34,7 +34,8 @@ class AutoClusterer final : public Clusterer {
   using Clusterer::cluster;
   Clustering cluster(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop) const override;
   std::string_view name() const override { return "auto"; }
-  ClusteringChoice choose(const Eigen::MatrixXd& points, core::Rng& rng, const core::StopCondition* stop = nullptr) const;
+  ClusteringChoice choose(const Eigen::MatrixXd& points, core::Rng& rng,
+                          const core::StopCondition* stop = nullptr) const;
 };
 
 }  // namespace amp::learn

@@ -6,7 +6,7 @@
 
 namespace amp::learn {
 
-// The elbow criterion of UAS (seed paper section 2.1.4; SPEC section 1, step 3).
+// The elbow criterion of UAS (the UAS region-identification study, section 2.1.4).
 //
 // The curve: f(c) = W(c) / T for c = 1..C, where W(c) = sum over the c clusters of the squared
 // distances of their points to their centre (the within-cluster variances, each times n) and T =

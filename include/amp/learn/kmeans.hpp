@@ -47,7 +47,7 @@ struct KMeansSettings {
 };
 
 // k-means with c chosen by the elbow criterion (elbow.hpp) on f(c) = W(c)/T, W(c) the wcss of the
-// best fit for c (UAS, seed paper section 2.1.4).
+// best fit for c (the UAS region-identification study, section 2.1.4).
 class KMeans final : public Clusterer {
  public:
   explicit KMeans(KMeansSettings settings = {});

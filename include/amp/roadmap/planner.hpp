@@ -49,7 +49,7 @@ class InvalidSeedError : public Error {
   using Error::Error;
 };
 
-// A motion planner: a function of explicit inputs (STYLE rule 6). All randomness comes from `rng`;
+// A motion planner: a function of explicit inputs (no hidden state). All randomness comes from `rng`;
 // `stop` is polled once per iteration with the roadmap size, so every planner ends with status
 // kTimeout or kNodeLimit when it fires. Planners hold no state between calls that changes results.
 class Planner {

@@ -23,7 +23,7 @@ struct Edge {
   EdgeCheck check = EdgeCheck::kValid;
 };
 
-// An undirected graph of configurations. States are stored contiguously (one array, STYLE rule 4);
+// An undirected graph of configurations. States are stored contiguously (one array: cache-friendly);
 // connected components are kept by union-find as edges are added. Removing an edge cannot be undone
 // in a union-find, so remove_edge() marks components stale and the next component query rebuilds
 // them from the remaining edges (O(V + E), paid only by lazy planners after a failed edge).

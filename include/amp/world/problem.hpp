@@ -33,7 +33,7 @@ struct Problem {
   std::filesystem::path file;  // where it was loaded from (empty if built in code)
   std::shared_ptr<const core::Space> space;
   std::shared_ptr<const Environment> environment;
-  // Configurations to join: {start, goal} for a query, or the seed configurations of SPEC section 3.
+  // Configurations to join: {start, goal} for a query, or the seeds Isto 2003 joins in order.
   std::vector<State> seeds;
   ProblemDefaults defaults;
 

@@ -40,7 +40,7 @@ struct GridSearchStats {
   std::size_t repairs = 0;        // searches run again because a move clipped an obstacle
 };
 
-// Bidirectional A* on an implicit grid over the C-space (SPEC section 3; Isto et al.): the grid is
+// Bidirectional A* on an implicit grid over the C-space (Isto 2003, docs/run-cost-variance.md): the grid is
 // anchored at a; b's root is the cell nearest b (checked, unless it is a's cell). Moves change one
 // coordinate by one step; g and h are Manhattan distances in cells, f = A g + B h, ties broken
 // toward repeating the move that reached the cell, then toward the newest cell. A cell is checked

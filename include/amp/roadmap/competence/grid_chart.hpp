@@ -9,7 +9,7 @@
 namespace amp::roadmap {
 
 // Flat coordinates around an origin state, for searching a C-space on a grid (the A* local
-// planner of SPEC section 3). One coordinate per degree of freedom:
+// planner of Isto 2003, docs/run-cost-variance.md). One coordinate per degree of freedom:
 //   JointSpace (Rn, SE2, linkages, SCARA): joint offsets from the origin (angles of continuous
 //     joints the short way round); grid step (hi - lo) / steps, 2 pi / steps for continuous joints;
 //   Se3Space: translation offset, then the rotation vector of q_origin^-1 q (the exponential chart

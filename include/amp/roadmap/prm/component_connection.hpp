@@ -7,7 +7,7 @@
 
 namespace amp::roadmap {
 
-// Up to k nearest vertices of *each* connected component (Isto et al., SPEC section 3), nearest
+// Up to k nearest vertices of *each* connected component (Isto 2003), nearest
 // first over all components (ties by lower id). With PrmSettings::skip_same_component the PRM stops
 // trying a component once the new vertex has joined it, so k bounds the attempts per component.
 // A linear scan per query: O(S log S) for S vertices, small beside the A* searches it feeds.

@@ -18,7 +18,7 @@ struct Insertion {
 
   // Visibility (UAS): successes / attempts. A vertex with no attempt had no neighbour at all (the
   // roadmap was empty): nothing around it was seen to block it, so we take free space around it as
-  // open and its visibility as 1 (SPEC section 1), which costs no extra CD call.
+  // open and its visibility as 1 (docs/uas.md), which costs no extra CD call.
   double visibility() const {
     return attempts == 0 ? 1.0 : static_cast<double>(successes) / static_cast<double>(attempts);
   }

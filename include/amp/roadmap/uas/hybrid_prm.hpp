@@ -31,7 +31,7 @@ struct SamplerSetOptions {
   std::shared_ptr<const VisibleNodes> known;
 };
 
-// The UAS sampler set (seeds/uas-region-identification.txt, 4.1.2), each restricted to `domain`
+// The UAS sampler set (the UAS region-identification study, section 4.1.2; docs/uas.md), each restricted to `domain`
 // (null = the whole space): uniform, Gaussian d = r, Gaussian d = 2r, OBPRM, and optionally the bridge
 // test (d = 2r); r = the robot's smallest diameter (1% of the space extent for a point robot).
 // Names: uniform, gaussian_r, gaussian_2r, obprm, bridge, expansion. Each counts into ctx.checker.

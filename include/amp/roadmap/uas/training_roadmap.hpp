@@ -33,7 +33,7 @@ struct TrainingSettings {
   void validate() const;  // throws ParameterError
 };
 
-// UAS's training set (seed paper 4.2): a small roadmap of fixed proportions of uniform, Gaussian
+// UAS's training set (UAS study, section 4.2): a small roadmap of fixed proportions of uniform, Gaussian
 // (d = r) and OBPRM nodes, each the next in turn, and per node the features clustering uses.
 struct TrainingSet {
   std::shared_ptr<Roadmap> roadmap;  // free vertices, checked edges (reusable by the planning PRM)

@@ -36,7 +36,7 @@ struct UasSettings {
   void validate() const;  // throws ParameterError
 };
 
-// UAS, the unsupervised adaptive strategy (seed paper, Algorithm 2.1): a training roadmap (Phase
+// UAS, the unsupervised adaptive strategy (docs/uas.md; Algorithm 2.1): a training roadmap (Phase
 // kTraining), regions by clustering its nodes' visibility and positions, then PRM whose samples come
 // from a Hybrid PRM per region in round robin, connected to the k nearest in the whole roadmap,
 // until the seeds are connected or the run's limits. One cluster: one region, the whole space, i.e.

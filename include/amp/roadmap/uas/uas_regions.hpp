@@ -38,7 +38,7 @@ struct RegionSettings {
   void validate() const;  // throws ParameterError (also for an unknown clustering name)
 };
 
-// The training set, its clustering and its regions (seed paper, Algorithm 2.1 line 1).
+// The training set, its clustering and its regions (the UAS region-identification study, Algorithm 2.1 line 1).
 struct RegionModel {
   TrainingSet training;
   learn::Clustering clustering;
@@ -72,7 +72,8 @@ double region_robot_size(const world::Environment& environment);
 
 // Training roadmap (CD calls in the counters' current phase), standardised features, clustering and
 // regions. If `stop` fires during training or clustering, the model holds the training set (partial,
-// if cut short), no clustering and no region (training.stopped says why). Throws amp::Error when training found no free state.
+// if cut short), no clustering and no region (training.stopped says why). Throws amp::Error when
+// training found no free state.
 RegionModel identify_regions(const PlanningContext& ctx, const RegionSettings& settings,
                              const core::StopCondition& stop, core::Rng& rng);
 
