@@ -1,4 +1,4 @@
-// Region identification's clustering step (SPEC section 1, step 3) on a 400-point 3-D training set:
+// Region identification's clustering step (the UAS paper, step 3; docs/uas.md) on a 400-point 3-D training set:
 // four Gaussian blobs (sd 1) of 100 points at the vertices of a tetrahedron 10 from its centre,
 // standardised as UAS standardises its features. Targets: k-means over c = 1..10 with 10 restarts and
 // Ward < 50 ms; PG-means < 500 ms; auto (all three and their silhouettes) reported. state.counters["clusters"] reports the c chosen.

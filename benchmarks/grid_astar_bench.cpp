@@ -1,6 +1,6 @@
 // Cost of the A* grid local planner per cell, apart from the validity checks: a search that is
 // stopped after exactly 10,000 checked cells, against a checker that only tests one coordinate
-// (a wall across the space, so the search never meets). SPEC / issue 5: <= 5 ms per 10,000 cells.
+// (a wall across the space, so the search never meets). Target (docs/run-cost-variance.md): <= 5 ms per 10,000 cells.
 #include <benchmark/benchmark.h>
 
 #include <memory>

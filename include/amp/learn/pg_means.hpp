@@ -32,7 +32,7 @@ ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMix
 // PG-means (Feng & Hamerly, "PG-means: learning the number of clusters in data", NIPS 2006):
 // fit a Gaussian mixture by EM starting from k = 1; test the fit by test_projections; while some
 // projection rejects, add one cluster and refit; stop when all accept or at max_clusters. Final
-// labels assign each point to the nearest mixture mean (Euclidean, as the UAS paper and SPEC say);
+// labels assign each point to the nearest mixture mean (Euclidean, as the UAS paper says);
 // a mean nearest to no point is dropped, so c <= k.
 //
 // A new cluster (paper section 3: several random new centres, keep the best likelihood) is tried
@@ -43,7 +43,7 @@ ProjectionTest test_projections(const Eigen::MatrixXd& points, const GaussianMix
 //
 // The KS critical value assumes a fully specified model, but the model was fitted to the same data,
 // so the test is conservative (Lilliefors' effect): it tends to accept, i.e. to under- rather than
-// over-split. Feng & Hamerly calibrate by simulation instead; SPEC asks for the computed value.
+// over-split. Feng & Hamerly calibrate by simulation instead; we use the computed value, as the UAS paper does.
 class PgMeans final : public Clusterer {
  public:
   explicit PgMeans(PgMeansSettings settings = {});

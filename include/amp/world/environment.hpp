@@ -1,47 +1,14 @@
 #pragma once
-#include <memory>
-
-#include <Eigen/Geometry>
-
-#include "amp/core/counters.hpp"
-#include "amp/core/state.hpp"
-#include "amp/world/shapes2d.hpp"
-#include "amp/world/validity_checker.hpp"
+#include "amp/world/checker_factory.hpp"
+#include "amp/world/planning_features.hpp"
+#include "amp/world/world_drawing.hpp"
 
 namespace amp::world {
 
-class OccupancyGrid;
-
-// What `amp render` draws of a world or a robot: shapes in the plane (3-D worlds: their top view,
-// i.e. projection on z = 0), and for map worlds the occupancy grid itself.
-struct Outline {
-  Shapes2d shapes;
-  const OccupancyGrid* grid = nullptr;  // owned by the environment; null unless a map world
-};
-
-// A world with a robot in it: makes validity checkers and describes itself for drawing and for
-// planners' features. Immutable once built, so one environment serves every thread of a benchmark.
+// A world with a robot in it, in its three roles: it makes validity checkers (runs), draws itself
+// (viz) and tells planners its extent and the robot's size (features). Code that needs one role
+// takes that role's interface. Immutable once built, so one environment serves every thread.
 // Implementations: PlanarEnvironment (2-D shapes), SpatialEnvironment (FCL), GridEnvironment (maps).
-class Environment {
- public:
-  virtual ~Environment() = default;
-
-  // 2 for planar and map worlds, 3 for FCL worlds.
-  virtual int workspace_dimension() const = 0;
-  // A new checker that counts into `counters`; one per thread.
-  virtual std::unique_ptr<ValidityChecker> make_checker(core::Counters& counters) const = 0;
-  // Axis-aligned bounds of the workspace (z range 0..0 for planar worlds).
-  virtual Eigen::AlignedBox3d workspace_bounds() const = 0;
-  // Obstacles as drawn by `amp render`.
-  virtual Outline obstacle_outline() const = 0;
-  // The robot's footprint at state s, world frame (3-D: top view).
-  virtual Shapes2d robot_outline(const State& s) const = 0;
-  // Position of the robot's reference point (UAS features X, Y, Z; the end effector for arms).
-  virtual Eigen::Vector3d reference_point(const State& s) const = 0;
-  // Smallest diameter of the robot (Gaussian sampler distance d = r in UAS).
-  virtual double robot_min_diameter() const = 0;
-  // Largest distance of a robot point from its reference frame origin (metric weight of rotations).
-  virtual double robot_radius() const = 0;
-};
+class Environment : public CheckerFactory, public WorldDrawing, public PlanningFeatures {};
 
 }  // namespace amp::world

@@ -14,18 +14,14 @@ void register_competence_prms(PlannerRegistry& registry) {
     CompetenceKind kind;
     const char* name;
     const char* what;
-    double fallback, lo, hi;  // the form's own parameter: default and range
-    const char* help;
   };
   const Form forms[] = {
-      {CompetenceKind::kStatic, "prm-c", "static competence O_th = o", 8, 1, 1e6, "O_th, fixed"},
-      {CompetenceKind::kGlobal, "prm-g", "global competence O_th = (S / s) * 32", 1000, 1, 1e9,
-       "roadmap size at which O_th = 32"},
-      {CompetenceKind::kLocal, "prm-l", "local competence O_th = 1 + n / r_s(v)", 0.1, 0.001, 1000,
-       "scale of O_th over a vertex's failure ratio"},
+      {CompetenceKind::kStatic, "prm-c", "static competence O_th = o"},
+      {CompetenceKind::kGlobal, "prm-g", "global competence O_th = (S / s) * 32"},
+      {CompetenceKind::kLocal, "prm-l", "local competence O_th = 1 + n / r_s(v)"},
   };
   for (const Form& f : forms) {
-    std::vector<ParamSpec> specs = {{competence_parameter(f.kind), ParamType::kReal, f.fallback, f.lo, f.hi, {}, f.help}};
+    std::vector<ParamSpec> specs = {competence_spec(f.kind)};
     for (const ParamSpec& s : CompetencePrmSettings::schema().specs()) specs.push_back(s);
     const std::string what = std::string("PRM with a bidirectional A* grid local planner (Isto 2003), ") + f.what;
     registry.add(PlannerInfo{f.name, what, specs}, [f](const Params& p) -> std::unique_ptr<Planner> {

@@ -7,13 +7,29 @@
 
 namespace amp::roadmap {
 
-StaticCompetence::StaticCompetence(double o) : o_(o) {
-  if (!(o >= 1.0) || !std::isfinite(o)) throw ParameterError("prm-c: o must be a number >= 1 (O(C) is never below 1)");
+namespace {
+// Checks `value` against the form's spec, with the catalog's own one-line message.
+double checked(CompetenceKind kind, const char* planner, double value) {
+  const core::ParamSpec& spec = competence_spec(kind);
+  core::Params(planner, {spec}, {{spec.name, value}});
+  return value;
+}
+}  // namespace
+
+const core::ParamSpec& competence_spec(CompetenceKind kind) {
+  // O(C) is never below 1, so o < 1 refuses every search; s and n scale O_th and must be positive.
+  static const core::ParamSpec o{"o", core::ParamType::kReal, 8.0, 1, 1e6, {}, "O_th, fixed"};
+  static const core::ParamSpec s{"s", core::ParamType::kReal, 1000.0, 1, 1e9, {}, "roadmap size at which O_th = 32"};
+  static const core::ParamSpec n{
+      "n", core::ParamType::kReal, 0.1, 0.001, 1000, {}, "scale of O_th over a vertex's failure ratio"};
+  return kind == CompetenceKind::kStatic ? o : kind == CompetenceKind::kGlobal ? s : n;
 }
 
-GlobalCompetence::GlobalCompetence(double s) : s_(s) {
-  if (!(s > 0.0) || !std::isfinite(s)) throw ParameterError("prm-g: s must be a positive number");
-}
+const char* competence_parameter(CompetenceKind kind) { return competence_spec(kind).name.c_str(); }
+
+StaticCompetence::StaticCompetence(double o) : o_(checked(CompetenceKind::kStatic, "prm-c", o)) {}
+
+GlobalCompetence::GlobalCompetence(double s) : s_(checked(CompetenceKind::kGlobal, "prm-g", s)) {}
 
 double GlobalCompetence::threshold(const EdgeRequest& edge) {
   if (edge.roadmap_size > 0) last_size_ = edge.roadmap_size;
@@ -21,9 +37,7 @@ double GlobalCompetence::threshold(const EdgeRequest& edge) {
   return std::max(static_cast<double>(last_size_) / s_ * 32.0, 1e-9);
 }
 
-LocalCompetence::LocalCompetence(double n) : n_(n) {
-  if (!(n > 0.0) || !std::isfinite(n)) throw ParameterError("prm-l: n must be a positive number");
-}
+LocalCompetence::LocalCompetence(double n) : n_(checked(CompetenceKind::kLocal, "prm-l", n)) {}
 
 double LocalCompetence::success_ratio(std::size_t v) const {
   if (v >= calls_.size()) return 1.0;

@@ -78,10 +78,6 @@ const std::vector<double>& metaplanner_values(CompetenceKind kind) {
   return kind == CompetenceKind::kStatic ? o : kind == CompetenceKind::kGlobal ? s : n;
 }
 
-const char* competence_parameter(CompetenceKind kind) {
-  return kind == CompetenceKind::kStatic ? "o" : kind == CompetenceKind::kGlobal ? "s" : "n";
-}
-
 const core::SettingsSchema<CompetencePrmSettings>& CompetencePrmSettings::schema() {
   using S = CompetencePrmSettings;
   static const core::SettingsSchema<S> schema("competence prm", [] {

@@ -40,12 +40,12 @@ GridAStarPlanner::GridAStarPlanner(const core::Space& space, const world::Validi
       poll_(stop),
       settings_(settings),
       chart_(space, settings.steps),
-      dims_(chart_.dimension()) {
+      dims_(chart_.dimension()),
+      cells_(std::min(dims_, kMaxDims)) {
   settings_.validate();
   if (dims_ > kMaxDims) {
     throw ParameterError("grid: at most " + std::to_string(kMaxDims) + " degrees of freedom, got " + std::to_string(dims_));
   }
-  table_.resize(1024);
 }
 
 void GridAStarPlanner::set_threshold(double o_th) {
@@ -103,47 +103,9 @@ void GridAStarPlanner::replay(const State& a, const State& b, const std::vector<
   if (!out.empty() && space_->distance(out.back(), b) == 0.0) out.pop_back();
 }
 
-std::uint64_t GridAStarPlanner::hash(const Cell& c) const {
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-  for (int i = 0; i < dims_; ++i) {
-    h ^= static_cast<std::uint16_t>(c[static_cast<std::size_t>(i)]);
-    h *= 0xff51afd7ed558ccdULL;
-    h ^= h >> 29;
-  }
-  return h;
-}
-
-std::int32_t GridAStarPlanner::find(const Cell& c) const {
-  const std::size_t mask = table_.size() - 1;
-  for (std::size_t i = hash(c) & mask;; i = (i + 1) & mask) {
-    const Slot& s = table_[i];
-    if (s.generation != generation_) return -1;
-    if (nodes_[static_cast<std::size_t>(s.node)].cell == c) return s.node;
-  }
-}
-
 std::int32_t GridAStarPlanner::insert(const Node& n) {
-  if (2 * (used_ + 1) > table_.size()) grow_table();
-  const auto id = static_cast<std::int32_t>(nodes_.size());
   nodes_.push_back(n);
-  const std::size_t mask = table_.size() - 1;
-  std::size_t i = hash(n.cell) & mask;
-  while (table_[i].generation == generation_) i = (i + 1) & mask;
-  table_[i] = Slot{id, generation_};
-  ++used_;
-  return id;
-}
-
-void GridAStarPlanner::grow_table() {
-  // Rehash this call's nodes into a table twice the size (amortised, like vector growth).
-  table_.assign(table_.size() * 2, Slot{});
-  generation_ = 1;
-  const std::size_t mask = table_.size() - 1;
-  for (std::size_t id = 0; id < nodes_.size(); ++id) {
-    std::size_t i = hash(nodes_[id].cell) & mask;
-    while (table_[i].generation == generation_) i = (i + 1) & mask;
-    table_[i] = Slot{static_cast<std::int32_t>(id), generation_};
-  }
+  return cells_.insert(n.cell);
 }
 
 bool GridAStarPlanner::cell_state(const Cell& c, State& out) {
@@ -261,11 +223,7 @@ bool GridAStarPlanner::forbidden(const Cell& a, const Cell& b) const {
 
 bool GridAStarPlanner::grid_search(double o_th) {
   nodes_.clear();
-  used_ = 0;
-  if (++generation_ == 0) {  // wrapped: clear the stamps once every 2^32 calls
-    table_.assign(table_.size(), Slot{});
-    generation_ = 1;
-  }
+  cells_.clear();
   sequence_ = 0;
   open_[0].clear();
   open_[1].clear();
@@ -302,7 +260,7 @@ bool GridAStarPlanner::grid_search(double o_th) {
         Cell n = c.cell;
         n[static_cast<std::size_t>(axis)] = static_cast<std::int16_t>(n[static_cast<std::size_t>(axis)] + (dir ? 1 : -1));
         if (!forbidden_.empty() && forbidden(c.cell, n)) continue;
-        const std::int32_t seen = find(n);
+        const std::int32_t seen = cells_.find(n);
         if (seen >= 0) {
           const Node& other = nodes_[static_cast<std::size_t>(seen)];
           if (other.side == 1 - side) {  // the fronts meet

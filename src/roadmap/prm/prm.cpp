@@ -29,7 +29,14 @@ class PrmRun {
         stop_(stop),
         roadmap_(std::make_shared<Roadmap>()),
         certifier_(ctx.space, ctx.checker, &stop) {
-    sampler_ = parts.sampler ? parts.sampler(ctx) : std::make_unique<UniformSampler>(ctx.space, ctx.checker);
+    if (parts.observed_sampler) {
+      ObservedSampler made = parts.observed_sampler(ctx);
+      sampler_ = std::move(made.sampler);
+      observer_ = std::move(made.observer);
+    } else {
+      sampler_ = parts.sampler ? parts.sampler(ctx) : std::make_unique<UniformSampler>(ctx.space, ctx.checker);
+      if (parts.observer) observer_ = parts.observer(ctx);
+    }
     local_planner_ = parts.local_planner ? parts.local_planner(ctx)
                                          : std::make_unique<StraightLinePlanner>(ctx.space, ctx.checker, &stop);
     if (parts.connection) {
@@ -39,7 +46,6 @@ class PrmRun {
       nn->reserve(std::min(stop.node_limit(), kMaxReservedNodes));
       connection_ = std::make_unique<KNearestConnection>(std::move(nn), static_cast<std::size_t>(settings.k));
     }
-    if (parts.observer) observer_ = parts.observer(ctx, *sampler_);
     const std::size_t k = static_cast<std::size_t>(settings.k);
     if (parts.initial) {
       *roadmap_ = *parts.initial;

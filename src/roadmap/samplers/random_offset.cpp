@@ -5,7 +5,7 @@
 #include <string>
 
 #include "amp/core/error.hpp"
-#include "amp/world/environment.hpp"
+#include "amp/world/planning_features.hpp"
 
 namespace amp::roadmap {
 
@@ -18,8 +18,8 @@ void validate_offset_settings(std::string_view sampler, double d, int max_attemp
   }
 }
 
-SamplerDistance sampler_distance(const world::Environment& environment, const core::Space& space, double scale) {
-  const double r = environment.robot_min_diameter();
+SamplerDistance sampler_distance(const world::PlanningFeatures& features, const core::Space& space, double scale) {
+  const double r = features.robot_min_diameter();
   if (r > 0.0 && std::isfinite(r)) return {scale * r, false};
   return {scale * kFallbackExtentFraction * space.maximum_extent(), true};
 }

@@ -1,7 +1,7 @@
 #include "amp/roadmap/samplers/sampling_domain.hpp"
 
 #include "amp/core/error.hpp"
-#include "amp/world/environment.hpp"
+#include "amp/world/planning_features.hpp"
 
 namespace amp::roadmap {
 
@@ -29,12 +29,12 @@ bool WholeSpaceDomain::sample(core::Rng& rng, State& out) const {
   return true;
 }
 
-ReferencePointBoxDomain::ReferencePointBoxDomain(const core::Space& space, const world::Environment& environment,
+ReferencePointBoxDomain::ReferencePointBoxDomain(const core::Space& space, const world::PlanningFeatures& features,
                                                  Eigen::AlignedBox3d box, DrawSequence sequence)
     : space_(&space),
-      environment_(&environment),
+      features_(&features),
       box_(box),
-      planar_(environment.workspace_dimension() == 2),
+      planar_(features.workspace_dimension() == 2),
       drawer_(space, sequence) {
   const int dims = planar_ ? 2 : 3;
   for (int i = 0; i < dims; ++i) {
@@ -47,7 +47,7 @@ ReferencePointBoxDomain::ReferencePointBoxDomain(const core::Space& space, const
 
 bool ReferencePointBoxDomain::contains(const State& s) const {
   if (!space_->in_bounds(s)) return false;
-  const Eigen::Vector3d p = environment_->reference_point(s);
+  const Eigen::Vector3d p = features_->reference_point(s);
   const int dims = planar_ ? 2 : 3;
   for (int i = 0; i < dims; ++i) {
     if (p[i] < box_.min()[i] || p[i] > box_.max()[i]) return false;

@@ -59,15 +59,11 @@ std::unique_ptr<Prm> make_hybrid_prm(const HybridPrmSettings& settings) {
   PrmSettings prm;
   prm.k = settings.k;
   PrmParts parts;
-  parts.sampler = [settings](const PlanningContext& ctx) -> std::unique_ptr<Sampler> {
+  parts.observed_sampler = [settings](const PlanningContext& ctx) {
     const SamplerSetOptions options{settings.bridge, settings.expansion, settings.sequence, nullptr};
-    return std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, options), ctx.checker, settings.hybrid);
-  };
-  parts.observer = [](const PlanningContext& ctx, Sampler& sampler) -> std::unique_ptr<InsertionObserver> {
+    auto sampler = std::make_unique<HybridSampler>(make_uas_samplers(ctx, nullptr, options), ctx.checker, settings.hybrid);
     const bool fallback = sampler_distance(ctx.environment, ctx.space, 1.0).fallback;
-    // parts.sampler above made it: the cast is to the type this very function pair creates.
-    return std::make_unique<HybridObserver>(static_cast<HybridSampler&>(sampler),
-                                            std::map<std::string, double>{{"sampler_distance_fallback", fallback}});
+    return with_hybrid_observer(std::move(sampler), {{"sampler_distance_fallback", fallback}});
   };
   return std::make_unique<Prm>(prm, std::move(parts));
 }

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include "amp/roadmap/uas/hybrid_observer.hpp"
 #include "amp/core/error.hpp"
 #include "amp/roadmap/prm/node_classifier.hpp"
 
@@ -100,17 +99,6 @@ void HybridSampler::observe(const Roadmap& roadmap, const Insertion& insertion) 
   for (Arm& a : arms_) {
     if (a.observer != nullptr) a.observer->inserted(roadmap, insertion);
   }
-}
-
-void HybridObserver::inserted(const Roadmap& roadmap, const Insertion& insertion) {
-  classes_.inserted(roadmap, insertion);
-  sampler_->observe(roadmap, insertion);
-  if (!insertion.seed) sampler_->reward_last(insertion);
-}
-
-void HybridObserver::report(std::map<std::string, double>& extra) const {
-  classes_.report(extra);
-  sampler_->report(extra);
 }
 
 }  // namespace amp::roadmap

@@ -124,10 +124,10 @@ double narrow_weight(const Region& region, const TrainingSet& training) {
   return 1.0 + narrow;
 }
 
-double region_robot_size(const world::Environment& environment) {
-  const double d = 2.0 * environment.robot_radius();
+double region_robot_size(const world::PlanningFeatures& features) {
+  const double d = 2.0 * features.robot_radius();
   if (d > 0.0) return d;
-  const Eigen::Vector3d extent = environment.workspace_bounds().sizes();
+  const Eigen::Vector3d extent = features.workspace_bounds().sizes();
   return kPointRobotExtentFraction * std::max({extent.x(), extent.y(), extent.z()});
 }
 

@@ -1,4 +1,4 @@
-// An edge check allocates nothing once its scratch has grown to the longest edge seen (STYLE rule 5):
+// An edge check allocates nothing once its scratch has grown to the longest edge seen (no allocation in hot loops):
 // global operator new is replaced by a counting one in this test executable only.
 #include <atomic>
 #include <cstdlib>

@@ -80,7 +80,7 @@ TEST(NodeClassifier, PrmReportsTheClassesOfAHandBuiltRoadmap) {
   std::vector<Insertion> seen;
   PrmParts parts;
   parts.sampler = [&](const PlanningContext&) { return std::make_unique<ScriptedSampler>(script); };
-  parts.observer = [&](const PlanningContext&, Sampler&) { return std::make_unique<Recorder>(&seen); };
+  parts.observer = [&](const PlanningContext&) { return std::make_unique<Recorder>(&seen); };
 
   core::Counters counters;
   const auto checker = p.environment->make_checker(counters);
@@ -115,7 +115,7 @@ TEST(NodeClassifier, ObservingChangesNothingInTheRun) {
   const world::Problem p = test::point_problem(true);
   auto run = [&](bool observe, std::uint64_t& cd) {
     PrmParts parts;
-    if (observe) parts.observer = [](const PlanningContext&, Sampler&) { return std::make_unique<NodeClassCounter>(); };
+    if (observe) parts.observer = [](const PlanningContext&) { return std::make_unique<NodeClassCounter>(); };
     core::Counters counters;
     const auto checker = p.environment->make_checker(counters);
     const PlanningContext ctx{*p.space, *p.environment, *checker, p.seeds};

@@ -5,12 +5,21 @@
 #include <string>
 #include <vector>
 
+#include "amp/core/parameters.hpp"
 #include "amp/roadmap/local_planners/local_planner.hpp"
 
 namespace amp::roadmap {
 
-// Sets the A* local planner's competence threshold O_th for each edge PRM asks for (SPEC
-// section 3). Implementations: StaticCompetence (PRM-C), GlobalCompetence (PRM-G), LocalCompetence
+enum class CompetenceKind { kStatic, kGlobal, kLocal };  // PRM-C, PRM-G, PRM-L
+
+// Each form's own parameter (o, s or n): name, default, range and help, written once; the catalog
+// lists it and the policies check their value against it.
+const core::ParamSpec& competence_spec(CompetenceKind kind);
+// "o", "s" or "n".
+const char* competence_parameter(CompetenceKind kind);
+
+// Sets the A* local planner's competence threshold O_th for each edge PRM asks for (Isto et al.;
+// docs/run-cost-variance.md). Implementations: StaticCompetence (PRM-C), GlobalCompetence (PRM-G), LocalCompetence
 // (PRM-L). One per run: policies learn from the outcomes they are told.
 class CompetencePolicy {
  public:
@@ -22,7 +31,7 @@ class CompetencePolicy {
 // PRM-C: a fixed O_th = o.
 class StaticCompetence final : public CompetencePolicy {
  public:
-  explicit StaticCompetence(double o);  // throws ParameterError unless o >= 1
+  explicit StaticCompetence(double o);  // throws ParameterError outside competence_spec(kStatic)
   double threshold(const EdgeRequest&) override { return o_; }
 
  private:
@@ -33,7 +42,7 @@ class StaticCompetence final : public CompetencePolicy {
 // threshold is under 1, which no search can meet (O >= 1), so the roadmap first grows by sampling.
 class GlobalCompetence final : public CompetencePolicy {
  public:
-  explicit GlobalCompetence(double s);  // throws ParameterError unless s > 0
+  explicit GlobalCompetence(double s);  // throws ParameterError outside competence_spec(kGlobal)
   double threshold(const EdgeRequest& edge) override;
 
  private:
@@ -45,7 +54,7 @@ class GlobalCompetence final : public CompetencePolicy {
 // either end, O_th(v) = 1 + n / r_s(v); the larger of the two ends' thresholds is used.
 class LocalCompetence final : public CompetencePolicy {
  public:
-  explicit LocalCompetence(double n);  // throws ParameterError unless n > 0
+  explicit LocalCompetence(double n);  // throws ParameterError outside competence_spec(kLocal)
   double threshold(const EdgeRequest& edge) override;
   void record(const EdgeRequest& edge, bool success) override;
   // r_s(v); 1 for a vertex never tried.

@@ -1,13 +1,12 @@
 #pragma once
 #include <vector>
 
+#include "amp/roadmap/competence/competence_policy.hpp"
 #include "amp/roadmap/competence/competent_local_planner.hpp"
 #include "amp/roadmap/competence/grid_astar_planner.hpp"
 #include "amp/roadmap/planner.hpp"
 
 namespace amp::roadmap {
-
-enum class CompetenceKind { kStatic, kGlobal, kLocal };  // PRM-C, PRM-G, PRM-L
 
 // Isto et al.'s PRM: uniform pseudo-random samples, each joined to up to k nearest vertices of each
 // connected component by the competence-controlled A* grid planner, until every seed is in one
@@ -19,15 +18,13 @@ struct CompetencePrmSettings {
   double value = 0.1;
   int k = 10;
   GridAStarSettings grid;
-  // k and the grid's fields; `value` is checked by its policy, its range is the catalog's per kind.
+  // k and the grid's fields; `value` is checked against competence_spec(kind).
   static const core::SettingsSchema<CompetencePrmSettings>& schema();
   void validate() const;  // throws ParameterError
 };
 
 // {2, 4, 8, 16, 32} for o, {300, 1000, 3000, 9000} for s, {0.01, 0.03, 0.1, 0.3} for n.
 const std::vector<double>& metaplanner_values(CompetenceKind kind);
-// "o", "s" or "n".
-const char* competence_parameter(CompetenceKind kind);
 
 class CompetencePrm final : public Planner {
  public:

@@ -9,6 +9,7 @@
 #include "amp/core/settings_schema.hpp"
 #include "amp/core/space.hpp"
 #include "amp/core/stop_condition.hpp"
+#include "amp/roadmap/competence/grid_cell_table.hpp"
 #include "amp/roadmap/competence/grid_chart.hpp"
 #include "amp/roadmap/local_planners/local_planner.hpp"
 #include "amp/world/validity_checker.hpp"
@@ -16,7 +17,7 @@
 namespace amp::roadmap {
 
 struct GridAStarSettings {
-  int steps = 128;        // grid steps per degree of freedom across its range (SPEC: 512 for the puzzle)
+  int steps = 128;        // grid steps per degree of freedom across its range (512 for the puzzle: docs/run-cost-variance.md)
   int g_weight = 3;       // A in f = A g + B h
   int h_weight = 5;       // B: greedy, B > A
   // Cells checked per call before the search gives up whatever its competence; a safety net so
@@ -54,8 +55,8 @@ struct GridSearchStats {
 // search's last expanded cell, i.e. cells examined per step travelled by both fronts; a straight
 // free path has O = 1 throughout. The search is abandoned as soon as O > O_th.
 //
-// Memory and time are proportional to the cells reached: visited cells live in an open-addressing
-// hash table reset by a generation stamp, nodes and heaps in vectors kept between calls.
+// Memory and time are proportional to the cells reached: visited cells live in a GridCellTable
+// (their ids index nodes_), nodes and heaps in vectors kept between calls.
 //
 // `stop`, when given, is polled every core::StopPoll::kStride CD calls of connect() (cells and move
 // checks, counted across calls): once it fires the search is abandoned (stats.stopped) and the edge
@@ -63,7 +64,7 @@ struct GridSearchStats {
 // accepted edge and is never stopped (it must find the same path).
 class GridAStarPlanner final : public LocalPlanner {
  public:
-  static constexpr int kMaxDims = 12;
+  static constexpr int kMaxDims = GridCellTable::kMaxDims;
 
   // Throws ParameterError for bad settings or a space without a grid chart.
   GridAStarPlanner(const core::Space& space, const world::ValidityChecker& checker, GridAStarSettings settings = {},
@@ -91,17 +92,13 @@ class GridAStarPlanner final : public LocalPlanner {
   const GridAStarSettings& settings() const { return settings_; }
 
  private:
-  using Cell = std::array<std::int16_t, kMaxDims>;
+  using Cell = GridCellTable::Cell;
   struct Node {
     Cell cell;
     std::int32_t parent;
     std::int32_t g;
     std::int8_t side;  // 0 forward, 1 backward, kBlocked
     std::int8_t move;  // 2 * axis + (step > 0), -1 for a root
-  };
-  struct Slot {
-    std::int32_t node = -1;
-    std::uint32_t generation = 0;
   };
   struct QueueEntry {
     std::uint64_t key;  // f, then tie, then newest first
@@ -114,10 +111,7 @@ class GridAStarPlanner final : public LocalPlanner {
   bool segment_free(const State& a, const State& b);
   std::size_t first_clipping_move();  // index in chain_ of the first bad move's end; 0 if none
   bool forbidden(const Cell& a, const Cell& b) const;
-  std::int32_t find(const Cell& c) const;
-  std::int32_t insert(const Node& n);
-  void grow_table();
-  std::uint64_t hash(const Cell& c) const;
+  std::int32_t insert(const Node& n);  // into nodes_ and cells_, same id
   bool cell_state(const Cell& c, State& out);
   int manhattan(const Cell& c, const Cell& target) const;
   void push(int side, std::int32_t node, int h);
@@ -138,9 +132,7 @@ class GridAStarPlanner final : public LocalPlanner {
   GridSearchStats last_;
 
   std::vector<Node> nodes_;
-  std::vector<Slot> table_;
-  std::uint32_t generation_ = 0;
-  std::size_t used_ = 0;
+  GridCellTable cells_;
   std::array<std::vector<QueueEntry>, 2> open_;
   std::uint64_t sequence_ = 0;
   std::array<double, kMaxDims> x_{};

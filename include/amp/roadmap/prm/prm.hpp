@@ -30,6 +30,13 @@ struct PrmSettings {
   void validate() const { schema().validate(*this); }  // throws ParameterError
 };
 
+// A sampler and the observer that feeds it what its samples did; the observer may refer to the
+// sampler, which outlives it in a run.
+struct ObservedSampler {
+  std::unique_ptr<Sampler> sampler;
+  std::unique_ptr<InsertionObserver> observer;
+};
+
 // The policies a PRM is composed of, made afresh for every plan() call from its context (each holds
 // per-run scratch and counts into the context's checker). Empty members take the defaults: uniform
 // sampling, straight-line edges, k nearest by KD-tree.
@@ -37,9 +44,12 @@ struct PrmParts {
   std::function<std::unique_ptr<Sampler>(const PlanningContext&)> sampler;
   std::function<std::unique_ptr<LocalPlanner>(const PlanningContext&)> local_planner;
   std::function<std::unique_ptr<ConnectionStrategy>(const PlanningContext&)> connection;
-  // Optional: told about every insertion (node classes, Hybrid PRM's rewards); gets the run's sampler
-  // so that an adaptive sampler can learn from its samples. Its report() goes into PlanResult::extra.
-  std::function<std::unique_ptr<InsertionObserver>(const PlanningContext&, Sampler&)> observer;
+  // Optional: told about every insertion (node classes); its report() goes into PlanResult::extra.
+  std::function<std::unique_ptr<InsertionObserver>(const PlanningContext&)> observer;
+  // Optional, in place of sampler and observer: a sampler that learns from its samples and the
+  // observer that teaches it, made together so that neither has to guess the other's type (Hybrid
+  // PRM, UAS).
+  std::function<ObservedSampler(const PlanningContext&)> observed_sampler;
   // Optional: a roadmap of free vertices and checked edges built earlier in the same run (UAS's
   // training roadmap) that the run starts from, so that work is not paid twice. Its vertices count
   // towards the node limit; the observer is not told about them.

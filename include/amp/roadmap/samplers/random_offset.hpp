@@ -6,7 +6,7 @@
 #include "amp/core/state.hpp"
 
 namespace amp::world {
-class Environment;
+class PlanningFeatures;
 }
 
 namespace amp::roadmap {
@@ -19,7 +19,7 @@ struct SamplerDistance {
   bool fallback = false;
 };
 inline constexpr double kFallbackExtentFraction = 0.01;
-SamplerDistance sampler_distance(const world::Environment& environment, const core::Space& space, double scale);
+SamplerDistance sampler_distance(const world::PlanningFeatures& features, const core::Space& space, double scale);
 
 // The settings every offset-drawing sampler shares (Gaussian, bridge, expansion): throws
 // ParameterError naming `sampler` unless d is positive and finite and max_attempts >= 1.

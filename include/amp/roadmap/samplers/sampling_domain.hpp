@@ -14,7 +14,7 @@
 #include "amp/core/state.hpp"
 
 namespace amp::world {
-class Environment;
+class PlanningFeatures;
 }
 
 namespace amp::roadmap {
@@ -81,7 +81,7 @@ class ReferencePointBoxDomain final : public SamplingDomain {
   static constexpr int kMaxDraws = 10000;
 
   // Planar worlds: the box's z range is ignored. Throws ParameterError for an empty box.
-  ReferencePointBoxDomain(const core::Space& space, const world::Environment& environment, Eigen::AlignedBox3d box,
+  ReferencePointBoxDomain(const core::Space& space, const world::PlanningFeatures& features, Eigen::AlignedBox3d box,
                           DrawSequence sequence = DrawSequence::kRandom);
   bool sample(core::Rng& rng, State& out) const override;
   bool contains(const State& s) const override;
@@ -89,7 +89,7 @@ class ReferencePointBoxDomain final : public SamplingDomain {
 
  private:
   const core::Space* space_;
-  const world::Environment* environment_;
+  const world::PlanningFeatures* features_;
   Eigen::AlignedBox3d box_;
   bool planar_;
   // Rejection keeps a low-discrepancy sequence low-discrepancy inside the box: the accepted points

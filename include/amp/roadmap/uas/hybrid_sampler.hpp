@@ -6,16 +6,16 @@
 #include <vector>
 
 #include "amp/core/settings_schema.hpp"
-#include "amp/roadmap/uas/adaptive_sampler.hpp"
 #include "amp/roadmap/prm/insertion_observer.hpp"
 #include "amp/roadmap/prm/node_classifier.hpp"
 #include "amp/roadmap/samplers/sampler.hpp"
+#include "amp/roadmap/uas/sample_learner.hpp"
 #include "amp/roadmap/uas/sampler_bandit.hpp"
 #include "amp/world/validity_checker.hpp"
 
 namespace amp::roadmap {
 
-// What a sample's cost counts (SPEC: "the CD calls the sample took").
+// What a sample's cost counts (the UAS paper: the CD calls the sample took).
 enum class SampleCost : std::uint8_t {
   // Sampling and connecting: every CD call between drawing the sample and its insertion. This is
   // what the node cost the planner, and it keeps cheap-to-draw samplers from winning on cost alone
@@ -43,7 +43,7 @@ struct HybridSettings {
 // Cost: the sample's CD calls (settings.cost says which) divided by the running mean of those costs in
 // this set (this one included), so that costs are near 1 and rhat is on the reward's scale; a sample
 // that spent no CD call counts as one. A failed sample costs its sampling CD calls.
-class HybridSampler final : public AdaptiveSampler {
+class HybridSampler final : public Sampler, public SampleLearner {
  public:
   struct Arm {
     std::string name;

@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "amp/roadmap/uas/adaptive_sampler.hpp"
 #include "amp/roadmap/uas/hybrid_sampler.hpp"
+#include "amp/roadmap/samplers/sampler.hpp"
+#include "amp/roadmap/uas/sample_learner.hpp"
 #include "amp/roadmap/uas/sampler_bandit.hpp"
 
 namespace amp::roadmap {
@@ -27,7 +28,7 @@ enum class RegionSchedule : std::uint8_t {
 // Samples region by region, m at a time, each region by its own Hybrid PRM (sampler set restricted to
 // the region's box); the reward of a sample goes to the region that drew it. The next region is the
 // next in turn (round robin) or drawn by a bandit over regions (adaptive).
-class RegionalSampler final : public AdaptiveSampler {
+class RegionalSampler final : public Sampler, public SampleLearner {
  public:
   // Throws ParameterError for no regions or m < 1.
   // `weights` (kWeighted only): one positive weight per region.

@@ -6,6 +6,7 @@
 
 #include "amp/learn/clusterer.hpp"
 #include "amp/roadmap/uas/training_roadmap.hpp"
+#include "amp/world/planning_features.hpp"
 
 namespace amp::roadmap {
 
@@ -68,7 +69,7 @@ double narrow_weight(const Region& region, const TrainingSet& training);
 
 // The robot's size for regions: its bounding diameter (2 x robot_radius), or 1% of the workspace
 // extent for a point robot.
-double region_robot_size(const world::Environment& environment);
+double region_robot_size(const world::PlanningFeatures& features);
 
 // Training roadmap (CD calls in the counters' current phase), standardised features, clustering and
 // regions. If `stop` fires during training or clustering, the model holds the training set (partial,

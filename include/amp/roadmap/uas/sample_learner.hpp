@@ -4,14 +4,15 @@
 
 #include "amp/roadmap/prm/insertion_observer.hpp"
 #include "amp/roadmap/roadmap.hpp"
-#include "amp/roadmap/samplers/sampler.hpp"
 
 namespace amp::roadmap {
 
-// A sampler that learns from what its last sample did once PRM inserted it (Hybrid PRM; UAS, which
-// routes the reward to the region that drew the sample).
-class AdaptiveSampler : public Sampler {
+// The learning half of an adaptive sampler: what its last sample did once PRM inserted it (Hybrid
+// PRM; UAS, which routes the reward to the region that drew the sample). A role beside Sampler, not
+// below it: HybridSampler and RegionalSampler are both, and HybridObserver holds only this half.
+class SampleLearner {
  public:
+  virtual ~SampleLearner() = default;
   // The last successful sample is now inserted; a call with nothing pending does nothing.
   virtual void reward_last(const Insertion& insertion) = 0;
   // Its per-run figures (PlanResult::extra).
