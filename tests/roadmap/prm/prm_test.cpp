@@ -146,7 +146,8 @@ TEST(Prm, SamplerThatNeverSucceedsStillStops) {
       std::vector<test::Box>{{1.5, 0, 8.5, 10}, {0, 0, 10, 4.5}, {0, 5.5, 10, 10}}, test::RobotKind::kPoint);
   p.seeds = {test::state2(1, 5), test::state2(9, 5)};
   // No node limit: the few samples that land near the seeds must not end the run before the clock.
-  const Outcome o = run_prm(p, {}, 1, static_cast<std::size_t>(-1), 0.1);  // long enough for a sample on a loaded machine
+  // 0.1 s: long enough for a first sample on a loaded machine (0.02 s once saw none).
+  const Outcome o = run_prm(p, {}, 1, static_cast<std::size_t>(-1), 0.1);
   EXPECT_EQ(o.result.status, core::PlanStatus::kTimeout);
   EXPECT_GT(o.result.extra.at("failed_samples"), 0.0);
 }
