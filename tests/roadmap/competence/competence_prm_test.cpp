@@ -147,17 +147,5 @@ TEST(CompetencePrm, UnsolvableRunStopsAtTheNodeLimit) {
   EXPECT_TRUE(o.result.path.empty());
 }
 
-TEST(CompetencePrm, BadParametersAreRejected) {
-  const auto& reg = builtin_planners();
-  EXPECT_THROW(reg.make("prm-c", {{"o", 0.5}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-g", {{"s", 0}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-l", {{"n", -1}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-l", {{"steps", 0}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-c", {{"n", 4}}), ParameterError);  // PRM-C has o, not n
-  for (const char* name : {"prm-c", "prm-g", "prm-l"}) {
-    EXPECT_NE(reg.make(name, {}), nullptr) << name;
-  }
-}
-
 }  // namespace
 }  // namespace amp::roadmap

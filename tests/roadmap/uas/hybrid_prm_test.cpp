@@ -184,15 +184,5 @@ TEST(HybridPrm, ReportsProbabilitiesSamplesAndClasses) {
   EXPECT_EQ(o.record.extra.at("sampler_distance_fallback"), 0.0);
 }
 
-TEST(HybridPrm, RegisteredWithItsParameters) {
-  const PlannerRegistry& r = builtin_planners();
-  for (const char* name : {"hybrid-prm", "gaussian-prm", "obprm", "bridge-prm"}) EXPECT_TRUE(r.contains(name)) << name;
-  EXPECT_THROW(r.make("hybrid-prm", {{"gamma", 0.0}}), ParameterError);
-  EXPECT_THROW(r.make("hybrid-prm", {{"alpha", -1.0}}), ParameterError);
-  EXPECT_THROW(r.make("gaussian-prm", {{"d", -1.0}}), ParameterError);
-  EXPECT_THROW(r.make("bridge-prm", {{"uniform_mix", 2.0}}), ParameterError);
-  EXPECT_NO_THROW(r.make("gaussian-prm", {{"d_scale", 2.0}}));
-}
-
 }  // namespace
 }  // namespace amp::roadmap

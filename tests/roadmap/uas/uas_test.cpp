@@ -351,18 +351,6 @@ TEST(Uas, StopsAtTheNodeLimitDuringTrainingOrPlanning) {
   EXPECT_EQ(later.record.nodes, 400u);
 }
 
-TEST(Uas, RejectsBadParameters) {
-  const PlannerRegistry& r = builtin_planners();
-  ASSERT_TRUE(r.contains("uas"));
-  EXPECT_THROW(r.make("uas", {{"clustering", "dbscan"}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"m", 0}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"training_nodes", 1}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"region_margin", -1}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"schedule", "random"}}), ParameterError);
-  EXPECT_NO_THROW(r.make("uas", {{"schedule", "round-robin"}}));
-  EXPECT_NO_THROW(r.make("uas", {{"clustering", "auto"}, {"schedule", "adaptive"}, {"reuse_training", false}}));
-}
-
 TEST(Uas, WithoutReuseThePlanningRoadmapStartsFromTheSeeds) {
   const RunOutcome o =
       execute_run(bundled("walls"), "uas", {{"reuse_training", false}}, 5, kNoTimeLimit, 20000);
