@@ -22,7 +22,6 @@
 
 #include "amp/core/rng.hpp"
 #include "amp/learn/adjusted_rand_index.hpp"
-#include "amp/learn/clusterer_choice.hpp"
 #include "amp/learn/kmeans.hpp"
 #include "amp/learn/pg_means.hpp"
 #include "amp/learn/silhouette.hpp"
@@ -161,15 +160,6 @@ TEST_P(ClustererTest, StopsWhenTheRunsStopConditionFires) {
   const core::StopCondition ample(600.0, 1000000);
   core::Rng r1(9), r2(9);
   EXPECT_EQ(method->cluster(b.points, r1, &ample).labels, method->cluster(b.points, r2).labels);
-}
-
-TEST(AutoClusterer, StopsWhenTheRunsStopConditionFires) {
-  const Blobs b = make_blobs(layouts()[0], 4);
-  std::atomic<bool> cancel{true};
-  const core::StopCondition cancelled(60.0, 1000000, &cancel);
-  core::Rng rng(9);
-  EXPECT_THROW(AutoClusterer().choose(b.points, rng, &cancelled), ClusteringStopped);
-  EXPECT_THROW(mean_silhouette(b.points, b.truth, 3, &cancelled), ClusteringStopped);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, ClustererTest, ::testing::ValuesIn(kMethods),

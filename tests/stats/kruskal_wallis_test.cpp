@@ -42,7 +42,7 @@ TEST(KruskalWallis, MatchesRWithTieCorrection) {
 }
 
 TEST(KruskalWallis, RunCostSamples) {
-  // R: kruskal.test over cost(gr, 0:239), gr = 1:3 (see anova_test.cpp):
+  // R: kruskal.test over cost(gr, 0:239), gr = 1:3 (see support/anova_groups.hpp):
   // chi-squared = 0.028651756818817375, p = 0.985776248718099546
   Groups g(3);
   for (int gr = 1; gr <= 3; ++gr) {

@@ -9,61 +9,10 @@
 #include "support/path_checks.hpp"
 
 #include "amp/core/error.hpp"
-#include "amp/roadmap/prm/component_connection.hpp"
 #include "roadmap/test_worlds.hpp"
 
 namespace amp::roadmap {
 namespace {
-
-TEST(CompetencePolicy, StaticIsFixed) {
-  StaticCompetence c(8);
-  EXPECT_EQ(c.threshold(EdgeRequest{1, 2, 50}), 8.0);
-  EXPECT_THROW(StaticCompetence(0.5), ParameterError);
-}
-
-TEST(CompetencePolicy, GlobalGrowsWithTheRoadmap) {
-  GlobalCompetence g(1000);
-  EXPECT_DOUBLE_EQ(g.threshold(EdgeRequest{1, 2, 100}), 3.2);   // 100 / 1000 * 32
-  EXPECT_DOUBLE_EQ(g.threshold(EdgeRequest{1, 2, 2000}), 64.0);
-  EXPECT_DOUBLE_EQ(g.threshold(EdgeRequest{}), 64.0);  // no size given: the last one
-  EXPECT_THROW(GlobalCompetence(0), ParameterError);
-}
-
-TEST(CompetencePolicy, LocalFollowsEachVertexsFailures) {
-  LocalCompetence l(0.3);
-  EXPECT_DOUBLE_EQ(l.threshold(EdgeRequest{7, 3, 10}), 1.3);  // untried: r_s = 1
-  // Vertex 3: one success, three failures -> r_s = (1 + 1) / (4 + 1) = 0.4, O_th = 1 + 0.3 / 0.4.
-  l.record(EdgeRequest{4, 3, 10}, true);
-  for (std::size_t v : {5u, 6u, 8u}) l.record(EdgeRequest{v, 3, 10}, false);
-  EXPECT_DOUBLE_EQ(l.success_ratio(3), 0.4);
-  EXPECT_DOUBLE_EQ(l.success_ratio(5), 0.5);  // (0 + 1) / (1 + 1)
-  EXPECT_DOUBLE_EQ(l.threshold(EdgeRequest{9, 3, 10}), 1.75);  // the larger of the two ends
-  EXPECT_DOUBLE_EQ(l.threshold(EdgeRequest{3, 9, 10}), 1.75);
-  EXPECT_DOUBLE_EQ(l.threshold(EdgeRequest{4, 9, 10}), 1.3);  // 4: (1 + 1) / (1 + 1) = 1
-  EXPECT_THROW(LocalCompetence(0), ParameterError);
-}
-
-TEST(ComponentNearestConnection, KNearestOfEachComponent) {
-  const auto space = core::make_rn_space({0, 0}, {10, 10});
-  Roadmap r;
-  // Component A: x = 1, 2, 3, 4 on y = 0 (chained); B: x = 6, 7 on y = 0; C: the lone (5, 5).
-  for (double x : {1.0, 2.0, 3.0, 4.0, 6.0, 7.0}) r.add_vertex(test::state2(x, 0));
-  r.add_vertex(test::state2(5, 5));
-  r.add_edge(0, 1, 1);
-  r.add_edge(1, 2, 1);
-  r.add_edge(2, 3, 1);
-  r.add_edge(4, 5, 1);
-  ComponentNearestConnection c(space, 2);
-  for (VertexId v = 0; v < r.vertex_count(); ++v) c.add(v, r.state(v));
-  const VertexId q = r.add_vertex(test::state2(5, 0));
-  std::vector<Neighbor> out;
-  c.candidates(r, q, out);
-  std::vector<std::size_t> ids;
-  for (const Neighbor& n : out) ids.push_back(n.index);
-  // Nearest first: 4 (d 1, A), 3 (d 1, B), 2 (d 2, A), 5 (d 2, B), 6 (d 5, C); A's 1 and 0 dropped.
-  EXPECT_EQ(ids, (std::vector<std::size_t>{3, 4, 2, 5, 6}));
-  EXPECT_TRUE(std::is_sorted(out.begin(), out.end()));
-}
 
 struct Outcome {
   PlanResult result;
@@ -145,18 +94,6 @@ TEST(CompetencePrm, UnsolvableRunStopsAtTheNodeLimit) {
   const Outcome o = run(p, settings(CompetenceKind::kLocal, 0.1), 1, 200);
   EXPECT_EQ(o.result.status, core::PlanStatus::kNodeLimit);
   EXPECT_TRUE(o.result.path.empty());
-}
-
-TEST(CompetencePrm, BadParametersAreRejected) {
-  const auto& reg = builtin_planners();
-  EXPECT_THROW(reg.make("prm-c", {{"o", 0.5}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-g", {{"s", 0}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-l", {{"n", -1}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-l", {{"steps", 0}}), ParameterError);
-  EXPECT_THROW(reg.make("prm-c", {{"n", 4}}), ParameterError);  // PRM-C has o, not n
-  for (const char* name : {"prm-c", "prm-g", "prm-l"}) {
-    EXPECT_NE(reg.make(name, {}), nullptr) << name;
-  }
 }
 
 }  // namespace

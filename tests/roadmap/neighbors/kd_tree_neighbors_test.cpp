@@ -106,21 +106,6 @@ TEST(KdTreeNeighbors, EqualsBruteForceOnEverySpace) {
   EXPECT_LT(evaluations / queries, 600u);
 }
 
-TEST(LinearNeighbors, SortedByDistanceThenIndex) {
-  const core::JointSpace space = core::make_rn_space({0, 0}, {10, 10});
-  LinearNeighbors nn(space);
-  nn.add(5, (State(2) << 1, 0).finished());
-  nn.add(2, (State(2) << 0, 1).finished());  // same distance as index 5: comes first
-  nn.add(9, (State(2) << 3, 0).finished());
-  nn.add(1, (State(2) << 0, 0.5).finished());
-  std::vector<Neighbor> out;
-  nn.k_nearest((State(2) << 0, 0).finished(), 3, out);
-  ASSERT_EQ(out.size(), 3u);
-  EXPECT_EQ(out[0], (Neighbor{1, 0.5}));
-  EXPECT_EQ(out[1], (Neighbor{2, 1.0}));
-  EXPECT_EQ(out[2], (Neighbor{5, 1.0}));
-}
-
 TEST(KdTreeNeighbors, EmptyAndDuplicateStates) {
   const core::Se3Space space(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), 1.0);
   KdTreeNeighbors nn(space);

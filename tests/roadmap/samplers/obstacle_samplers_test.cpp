@@ -1,4 +1,6 @@
-// Gaussian, OBPRM and bridge samplers (one typed suite), and the sampling domains they draw from.
+// What the obstacle-based samplers share (Gaussian, OBPRM, bridge: one typed suite), and their
+// settings checks. Each sampler's own behaviour is in <name>_sampler_test.cpp, the domains they draw
+// from in sampling_domain_test.cpp.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -13,7 +15,6 @@
 #include "amp/roadmap/samplers/obprm_sampler.hpp"
 #include "amp/roadmap/samplers/random_offset.hpp"
 #include "amp/roadmap/samplers/sampling_domain.hpp"
-#include "amp/roadmap/samplers/uniform_domain_sampler.hpp"
 #include "amp/roadmap/samplers/uniform_sampler.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
@@ -134,100 +135,6 @@ TYPED_TEST(ObstacleSampler, RegionSamplesStayInTheRegion) {
   for (const State& q : s) {
     const Eigen::Vector3d r = p.environment->reference_point(q);
     EXPECT_TRUE(r.x() >= 25 && r.x() <= 35 && r.y() >= 25 && r.y() <= 45) << r.transpose();
-  }
-}
-
-TEST(GaussianSampler, PairDistanceIsHalfNormalWithDeviationD) {
-  // Point robot in the box world: the offsets themselves are measured through random_offset.
-  const world::Problem p = test::point_problem(true);
-  core::Rng rng(1);
-  const State from = test::state2(5, 5);
-  constexpr int kDraws = 20000;
-  constexpr double kD = 0.3;
-  double sq = 0.0;
-  State out;
-  for (int i = 0; i < kDraws; ++i) {
-    random_offset(*p.space, rng, from, std::abs(rng.normal(0.0, kD)), out);
-    sq += std::pow(p.space->distance(from, out), 2);
-  }
-  // E[|N(0, d)|^2] = d^2, except for the rare offsets cut short at the target (targets are >= ~0 away).
-  EXPECT_NEAR(std::sqrt(sq / kDraws), kD, 0.02 * kD);
-}
-
-TEST(SamplerDistance, RobotDiameterOrOnePercentOfTheExtent) {
-  const world::Problem& p = walls();
-  const SamplerDistance r = sampler_distance(*p.environment, *p.space, 2.0);
-  EXPECT_FALSE(r.fallback);
-  EXPECT_DOUBLE_EQ(r.d, 2.0 * p.environment->robot_min_diameter());
-  const world::Problem point = test::point_problem(true);  // robot_min_diameter() = 0
-  const SamplerDistance f = sampler_distance(*point.environment, *point.space, 1.0);
-  EXPECT_TRUE(f.fallback);
-  EXPECT_DOUBLE_EQ(f.d, 0.01 * std::sqrt(200.0));
-}
-
-TEST(SamplingDomain, ReferencePointBoxIsUniformOverItsBox) {
-  const world::Problem p = test::point_problem(true);
-  const ReferencePointBoxDomain domain(*p.space, *p.environment,
-                                       Eigen::AlignedBox3d(Eigen::Vector3d(2, 6, 0), Eigen::Vector3d(4, 7, 0)));
-  core::Rng rng(2);
-  State s;
-  double mx = 0.0, my = 0.0;
-  constexpr int kDraws = 4000;
-  for (int i = 0; i < kDraws; ++i) {
-    ASSERT_TRUE(domain.sample(rng, s));
-    ASSERT_TRUE(domain.contains(s));
-    mx += s[0];
-    my += s[1];
-  }
-  EXPECT_NEAR(mx / kDraws, 3.0, 0.05);
-  EXPECT_NEAR(my / kDraws, 6.5, 0.03);
-  EXPECT_FALSE(domain.contains(test::state2(5, 5)));
-  EXPECT_THROW(ReferencePointBoxDomain(*p.space, *p.environment,
-                                       Eigen::AlignedBox3d(Eigen::Vector3d(4, 6, 0), Eigen::Vector3d(2, 7, 0))),
-               ParameterError);
-}
-
-TEST(SamplingDomain, HaltonBoxDrawsStayInTheBoxRepeatAndFillItEvenly) {
-  const world::Problem p = test::point_problem(true);
-  const Eigen::AlignedBox3d box(Eigen::Vector3d(2, 6, 0), Eigen::Vector3d(4, 7, 0));
-  const ReferencePointBoxDomain a(*p.space, *p.environment, box, DrawSequence::kHalton);
-  const ReferencePointBoxDomain b(*p.space, *p.environment, box, DrawSequence::kHalton);
-  core::Rng ra(2), rb(2);
-  // 512 draws on an 8 x 8 grid over the box (8 expected per cell). Pearson's statistic of the cell
-  // counts is chi-square with 63 degrees of freedom for independent draws (mean 63; below 31.5 with
-  // probability 3e-4); an even cover keeps it far lower.
-  constexpr int kSide = 8, kDraws = 512;
-  std::vector<int> cells(kSide * kSide, 0);
-  State s, t;
-  for (int i = 0; i < kDraws; ++i) {
-    ASSERT_TRUE(a.sample(ra, s));
-    ASSERT_TRUE(b.sample(rb, t));
-    ASSERT_EQ(s, t);
-    ASSERT_TRUE(a.contains(s));
-    const int cx = std::min(kSide - 1, static_cast<int>((s[0] - 2.0) / 2.0 * kSide));
-    const int cy = std::min(kSide - 1, static_cast<int>((s[1] - 6.0) / 1.0 * kSide));
-    ++cells[static_cast<std::size_t>(cx * kSide + cy)];
-  }
-  const double expected = static_cast<double>(kDraws) / (kSide * kSide);
-  double chi2 = 0.0;
-  for (const int c : cells) chi2 += (c - expected) * (c - expected) / expected;
-  EXPECT_LT(chi2, 31.5);
-  EXPECT_EQ(parse_draw_sequence("halton"), DrawSequence::kHalton);
-  EXPECT_EQ(parse_draw_sequence("random"), DrawSequence::kRandom);
-  EXPECT_THROW(parse_draw_sequence("sobol"), ParameterError);
-}
-
-TEST(UniformDomainSampler, OnTheWholeSpaceDrawsWhatUniformSamplerDraws) {
-  const world::Problem p = test::point_problem(true);
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  UniformSampler a(*p.space, *checker);
-  UniformDomainSampler b(std::make_shared<WholeSpaceDomain>(*p.space), *checker);
-  core::Rng ra(4), rb(4);
-  State qa, qb;
-  for (int i = 0; i < 50; ++i) {
-    ASSERT_EQ(a.sample(ra, qa), b.sample(rb, qb));
-    EXPECT_EQ(qa, qb);
   }
 }
 

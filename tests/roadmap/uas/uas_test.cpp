@@ -13,8 +13,6 @@
 #include "amp/core/error.hpp"
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
-#include "amp/roadmap/uas/training_roadmap.hpp"
-#include "amp/roadmap/uas/uas_regions.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
 
@@ -27,145 +25,6 @@ const world::Problem& bundled(const std::string& name) {
   static const world::Problem walls = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/walls.yaml");
   static const world::Problem maze = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/maze.yaml");
   return name == "walls" ? walls : maze;
-}
-
-TEST(ClusterStats, MatchHandComputedFigures) {
-  // Cluster 0: visibilities 0, 0.5, 1 -> mean 0.5, sample sd 0.5; cluster 1: 0.25 alone -> sd 0.
-  const auto s = cluster_stats({0.0, 0.25, 0.5, 1.0}, {0, 1, 0, 0}, 2);
-  ASSERT_EQ(s.size(), 2u);
-  EXPECT_EQ(s[0].size, 3u);
-  EXPECT_DOUBLE_EQ(s[0].size_percent, 75.0);
-  EXPECT_DOUBLE_EQ(s[0].visibility_mean, 0.5);
-  EXPECT_DOUBLE_EQ(s[0].visibility_std, 0.5);
-  EXPECT_DOUBLE_EQ(s[0].visibility_min, 0.0);
-  EXPECT_DOUBLE_EQ(s[0].visibility_max, 1.0);
-  EXPECT_DOUBLE_EQ(s[1].size_percent, 25.0);
-  EXPECT_DOUBLE_EQ(s[1].visibility_std, 0.0);
-  EXPECT_DOUBLE_EQ(s[1].visibility_min, 0.25);
-}
-
-TEST(MakeRegions, GrowBoxesToTheRobotSizeClipThemAndTakeInUncoveredSeeds) {
-  TrainingSet t;
-  t.planar = true;
-  t.positions = {{1, 1, 0}, {3, 2, 0}, {8, 8, 0}};  // cluster 0: two nodes; cluster 1: one (zero volume)
-  t.visibility = {1.0, 0.5, 0.2};
-  const Eigen::AlignedBox3d bounds(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 10, 0));
-  int extended = -1;
-  const auto r = make_regions(t, {0, 0, 1}, 2, bounds, 1.0, 0.5, {}, &extended);
-  ASSERT_EQ(r.size(), 2u);
-  EXPECT_EQ(extended, 0);
-  // Cluster 0: [1,3]x[1,2] grown by 0.5 per side -> [0.5,3.5]x[0.5,2.5].
-  EXPECT_TRUE(r[0].box.min().isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
-  EXPECT_TRUE(r[0].box.max().isApprox(Eigen::Vector3d(3.5, 2.5, 0)));
-  EXPECT_EQ(r[0].members, (std::vector<std::size_t>{0, 1}));
-  EXPECT_DOUBLE_EQ(r[0].stats.visibility_mean, 0.75);
-  // Cluster 1: a point, grown by the margin to 1.0 wide: exactly the robot size.
-  EXPECT_TRUE(r[1].box.min().isApprox(Eigen::Vector3d(7.5, 7.5, 0)));
-  EXPECT_TRUE(r[1].box.max().isApprox(Eigen::Vector3d(8.5, 8.5, 0)));
-  // No margin: the point still grows to the robot size (2.0 here), clipped by the bounds near a corner.
-  TrainingSet corner = t;
-  corner.positions[2] = {9.8, 9.8, 0};
-  const auto r2 = make_regions(corner, {0, 0, 1}, 2, bounds, 2.0, 0.0, {}, nullptr);
-  EXPECT_TRUE(r2[1].box.min().isApprox(Eigen::Vector3d(8.8, 8.8, 0)));
-  EXPECT_TRUE(r2[1].box.max().isApprox(Eigen::Vector3d(10, 10, 0)));
-  // A seed at (9, 1) lies in no box: the box of its nearest node's cluster (node 1, cluster 0) takes it in.
-  const auto r3 = make_regions(t, {0, 0, 1}, 2, bounds, 1.0, 0.5, {Eigen::Vector3d(9, 1, 0)}, &extended);
-  EXPECT_EQ(extended, 1);
-  EXPECT_TRUE(r3[0].box.contains(Eigen::Vector3d(9, 1, 0)));
-  EXPECT_FALSE(r3[1].box.contains(Eigen::Vector3d(9, 1, 0)));
-}
-
-TEST(TrainingRoadmap, HasFixedSamplerProportionsVisibilitiesAndCountsItsCdCalls) {
-  const world::Problem& p = bundled("maze");
-  core::Counters counters;
-  counters.set_phase(core::Phase::kTraining);
-  const auto checker = p.environment->make_checker(counters);
-  const PlanningContext ctx{*p.space, *p.environment, *checker, p.seeds};
-  core::Rng rng(3);
-  const core::StopCondition stop(kNoTimeLimit, 1000000);
-  const TrainingSet t = build_training_roadmap(ctx, TrainingSettings{}, stop, rng);
-  ASSERT_EQ(t.size(), 200u);
-  EXPECT_EQ(t.roadmap->vertex_count(), 200u);
-  EXPECT_EQ(std::count(t.sampler.begin(), t.sampler.end(), 0), 67);  // uniform, Gaussian, OBPRM in turn
-  EXPECT_EQ(std::count(t.sampler.begin(), t.sampler.end(), 1), 67);
-  EXPECT_EQ(std::count(t.sampler.begin(), t.sampler.end(), 2), 66);
-  core::Counters check;
-  const auto fresh = p.environment->make_checker(check);
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    EXPECT_TRUE(fresh->is_valid(t.roadmap->state(i)));
-    EXPECT_GE(t.visibility[i], 0.0);
-    EXPECT_LE(t.visibility[i], 1.0);
-    EXPECT_TRUE(t.positions[i].isApprox(p.environment->reference_point(t.roadmap->state(i))));
-  }
-  EXPECT_EQ(t.visibility[0], 1.0);  // no neighbour yet: open by convention
-  // The maze has narrow tunnels: some training nodes see few of their neighbours.
-  EXPECT_LT(*std::min_element(t.visibility.begin(), t.visibility.end()), 0.5);
-  const Eigen::MatrixXd f = t.features();
-  ASSERT_EQ(f.cols(), 3);  // planar: visibility, X, Y
-  EXPECT_EQ(f(5, 0), t.visibility[5]);
-  EXPECT_EQ(f(5, 2), t.positions[5].y());
-  EXPECT_GT(counters.cd_calls(core::Phase::kTraining), 0u);
-  EXPECT_EQ(counters.cd_calls(core::Phase::kPlanning), 0u);
-}
-
-// training_visibility=all: the same roadmap, and each node's visibility = its edges / every attempt it
-// took part in, recounted here by brute force (node j tried its k nearest among nodes 0..j-1).
-TEST(TrainingRoadmap, VisibilityOverAllAttemptsMatchesABruteForceRecount) {
-  const world::Problem& p = bundled("maze");
-  const core::StopCondition stop(kNoTimeLimit, 1000000);
-  auto build = [&](TrainingVisibility visibility) {
-    core::Counters counters;
-    const auto checker = p.environment->make_checker(counters);
-    const PlanningContext ctx{*p.space, *p.environment, *checker, p.seeds};
-    core::Rng rng(11);
-    TrainingSettings settings;
-    settings.visibility = visibility;
-    return build_training_roadmap(ctx, settings, stop, rng);
-  };
-  const TrainingSet own = build(TrainingVisibility::kInsertion);
-  const TrainingSet all = build(TrainingVisibility::kAllAttempts);
-  ASSERT_EQ(own.size(), all.size());
-  ASSERT_EQ(own.roadmap->edge_count(), all.roadmap->edge_count());
-  const std::size_t n = all.size();
-  const std::size_t k = static_cast<std::size_t>(TrainingSettings{}.k);
-  std::vector<std::size_t> tried(n, 0);
-  for (std::size_t j = 1; j < n; ++j) {
-    std::vector<std::pair<double, std::size_t>> d;
-    for (std::size_t i = 0; i < j; ++i) d.emplace_back(p.space->distance(all.roadmap->state(j), all.roadmap->state(i)), i);
-    const std::size_t m = std::min(k, j);
-    std::partial_sort(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(m), d.end());
-    tried[j] += m;
-    for (std::size_t t = 0; t < m; ++t) ++tried[d[t].second];
-  }
-  int differ = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    EXPECT_TRUE(all.roadmap->state(i) == own.roadmap->state(i));
-    const double expected = tried[i] == 0 ? 1.0 : static_cast<double>(all.roadmap->edges(i).size()) / static_cast<double>(tried[i]);
-    EXPECT_NEAR(all.visibility[i], expected, 1e-12) << "node " << i;
-    differ += all.visibility[i] != own.visibility[i];
-  }
-  EXPECT_GT(differ, 0);  // the option changes the feature
-}
-
-TEST(TrainingRoadmap, WithNoFreeSpaceFailsWithAClearMessage) {
-  // The whole square is one obstacle; no seeds (the training step does not need them).
-  const std::vector<State> none;
-  world::Problem p;
-  p.space = std::make_shared<core::JointSpace>(core::make_rn_space({0, 0}, {10, 10}));
-  p.environment = std::make_shared<test::BoxEnvironment>(std::vector<test::Box>{{-1, -1, 11, 11}}, test::RobotKind::kPoint);
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  const PlanningContext ctx{*p.space, *p.environment, *checker, none};
-  core::Rng rng(1);
-  const core::StopCondition stop(kNoTimeLimit, 1000000);
-  TrainingSettings s;
-  s.nodes = 10;
-  try {
-    build_training_roadmap(ctx, s, stop, rng);
-    FAIL() << "expected an error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("no free configuration"), std::string::npos) << e.what();
-  }
 }
 
 // A sampler that always returns the same state, to see which region drew a sample.
@@ -349,18 +208,6 @@ TEST(Uas, StopsAtTheNodeLimitDuringTrainingOrPlanning) {
   const RunOutcome later = execute_run(p, "uas", {}, 1, kNoTimeLimit, 400);
   EXPECT_EQ(later.record.status, core::PlanStatus::kNodeLimit);
   EXPECT_EQ(later.record.nodes, 400u);
-}
-
-TEST(Uas, RejectsBadParameters) {
-  const PlannerRegistry& r = builtin_planners();
-  ASSERT_TRUE(r.contains("uas"));
-  EXPECT_THROW(r.make("uas", {{"clustering", "dbscan"}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"m", 0}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"training_nodes", 1}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"region_margin", -1}}), ParameterError);
-  EXPECT_THROW(r.make("uas", {{"schedule", "random"}}), ParameterError);
-  EXPECT_NO_THROW(r.make("uas", {{"schedule", "round-robin"}}));
-  EXPECT_NO_THROW(r.make("uas", {{"clustering", "auto"}, {"schedule", "adaptive"}, {"reuse_training", false}}));
 }
 
 TEST(Uas, WithoutReuseThePlanningRoadmapStartsFromTheSeeds) {
