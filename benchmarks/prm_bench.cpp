@@ -15,7 +15,7 @@ using namespace amp;
 constexpr double kTimeLimit = 30.0;
 constexpr std::size_t kNodeLimit = 50000;
 
-void run_prm(benchmark::State& state, const world::Problem& p, const roadmap::ParamMap& params) {
+void run_prm(benchmark::State& state, const world::Problem& p, const core::ParamMap& params) {
   std::uint64_t seed = 0, cd = 0, nodes = 0, solved = 0;
   for (auto _ : state) {
     const roadmap::RunOutcome o = roadmap::execute_run(p, "prm", params, ++seed, kTimeLimit, kNodeLimit);

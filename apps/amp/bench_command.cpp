@@ -78,7 +78,7 @@ void print_planners() {
     for (const auto& p : info.params) {
       std::cout << "    " << p.name << " (" << core::to_string(p.type) << ", default "
                 << p.default_value.to_string();
-      if (p.type == roadmap::ParamType::kInteger || p.type == roadmap::ParamType::kReal) {
+      if (p.type == core::ParamType::kInteger || p.type == core::ParamType::kReal) {
         std::cout << ", range [" << p.min << ", " << p.max << "]";
       }
       if (!p.choices.empty()) {

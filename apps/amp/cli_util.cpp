@@ -81,14 +81,14 @@ std::string resolve_planner(const std::string& option, const world::Problem& pro
   return problem.defaults.planner;
 }
 
-roadmap::ParamMap parse_params(const std::vector<std::string>& items) {
-  roadmap::ParamMap params;
+core::ParamMap parse_params(const std::vector<std::string>& items) {
+  core::ParamMap params;
   for (const std::string& item : items) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) {
       throw ParameterError("--param: expected name=value, got '" + item + "'");
     }
-    params.insert_or_assign(item.substr(0, eq), roadmap::ParamValue(item.substr(eq + 1)));
+    params.insert_or_assign(item.substr(0, eq), core::ParamValue(item.substr(eq + 1)));
   }
   return params;
 }

@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "amp/roadmap/parameters.hpp"
+#include "amp/core/parameters.hpp"
 
 namespace amp::world {
 struct Problem;
@@ -34,7 +34,7 @@ CLI::Validator unsigned_integer();
 std::string resolve_planner(const std::string& option, const world::Problem& problem);
 
 // Parses `--param name=value` items; values stay strings, the planner's specs type them.
-roadmap::ParamMap parse_params(const std::vector<std::string>& items);
+core::ParamMap parse_params(const std::vector<std::string>& items);
 
 // The directory of the bundled problems: $AMP_PROBLEMS, ./problems, or the source tree's.
 std::filesystem::path problems_dir();

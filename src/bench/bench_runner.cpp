@@ -95,7 +95,7 @@ Trial run_trial(const Experiment& e, std::size_t index, const std::atomic<bool>*
   t.seed = trial_seed(e, t.id);
   const ExperimentProblem& problem = e.problems[t.id.problem];
   const PlannerConfig& config = e.planners[t.id.planner];
-  const roadmap::ParamMap params = trial_params(e, t.id, &t.drawn);
+  const core::ParamMap params = trial_params(e, t.id, &t.drawn);
   try {
     roadmap::RunOutcome run = roadmap::execute_run(*problem.problem, config.planner, params, t.seed, e.time_limit_s,
                                                    e.node_limit, roadmap::builtin_planners(), cancel);

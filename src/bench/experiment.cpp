@@ -31,7 +31,7 @@ std::string read_file(const std::filesystem::path& p) {
   return ss.str();
 }
 
-roadmap::ParamValue param_value(const YAML::Node& n) { return roadmap::ParamValue(n.Scalar()); }
+core::ParamValue param_value(const YAML::Node& n) { return core::ParamValue(n.Scalar()); }
 
 PlannerConfig parse_planner(const world::YamlFields& f) {
   PlannerConfig c;
@@ -57,7 +57,7 @@ PlannerConfig parse_planner(const world::YamlFields& f) {
     for (const auto& kv : d.node()) {
       const world::YamlFields values = d.child(kv.first.Scalar());
       if (values.size() == 0) values.fail("", "expected at least one value to draw from");
-      std::vector<roadmap::ParamValue> list;
+      std::vector<core::ParamValue> list;
       for (std::size_t i = 0; i < values.size(); ++i) {
         if (!values.node()[i].IsScalar()) values.fail("", "expected a list of values");
         list.push_back(param_value(values.node()[i]));
@@ -85,7 +85,7 @@ void check_planner(const PlannerConfig& c, const std::vector<ExperimentProblem>&
     }
     for (const auto& [name, values] : c.draws) {
       for (const auto& v : values) {
-        roadmap::ParamMap p = c.params;
+        core::ParamMap p = c.params;
         p.insert_or_assign(name, v);
         registry.make(c.planner, p);
       }
@@ -132,14 +132,14 @@ std::uint64_t trial_seed(const Experiment& e, const TrialId& id) {
   return core::derive_seed(core::derive_seed(e.seed, who), static_cast<std::uint64_t>(id.run));
 }
 
-roadmap::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std::string, std::string>* drawn) {
+core::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std::string, std::string>* drawn) {
   const PlannerConfig& c = e.planners[id.planner];
-  roadmap::ParamMap params = c.params;
+  core::ParamMap params = c.params;
   if (c.draws.empty()) return params;
   // A stream of its own (not the planner's), so drawing does not shift the planner's random numbers.
   core::Rng rng(core::derive_seed(trial_seed(e, id), 0x6d657461ULL));
   for (const auto& [name, values] : c.draws) {  // std::map: name order
-    const roadmap::ParamValue& v = values[rng.uniform_index(values.size())];
+    const core::ParamValue& v = values[rng.uniform_index(values.size())];
     params.insert_or_assign(name, v);
     if (drawn != nullptr) (*drawn)[name] = v.to_string();
   }

@@ -30,13 +30,13 @@ std::string swatch(std::size_t i) {
   return "<span class=\"swatch\" style=\"background:" + planner_color(i) + "\"></span>";
 }
 
-std::string params_text(const roadmap::ParamMap& params) {
+std::string params_text(const core::ParamMap& params) {
   std::string s;
   for (const auto& [k, v] : params) s += (s.empty() ? "" : ", ") + k + " = " + v.to_string();
   return s;
 }
 
-std::string draws_text(const std::map<std::string, std::vector<roadmap::ParamValue>>& draws) {
+std::string draws_text(const std::map<std::string, std::vector<core::ParamValue>>& draws) {
   std::string s;
   for (const auto& [k, values] : draws) {
     std::string set;

@@ -34,16 +34,16 @@ double path_clearance(const core::Space& space, const world::ValidityChecker& ch
   return best;
 }
 
-ParamMap with_problem_params(const world::Problem& problem, const PlannerInfo& planner, ParamMap params) {
+core::ParamMap with_problem_params(const world::Problem& problem, const PlannerInfo& planner, core::ParamMap params) {
   for (const auto& [name, value] : problem.defaults.params) {
     const bool declared = std::any_of(planner.params.begin(), planner.params.end(),
-                                      [&name](const ParamSpec& s) { return s.name == name; });
+                                      [&name](const core::ParamSpec& s) { return s.name == name; });
     if (declared) params.emplace(name, value);  // emplace keeps a value the run set
   }
   return params;
 }
 
-RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const ParamMap& params,
+RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const core::ParamMap& params,
                        std::uint64_t seed, double time_limit_s, std::size_t node_limit,
                        const PlannerRegistry& registry, const std::atomic<bool>* cancel) {
   if (!problem.space || !problem.environment) {

@@ -30,7 +30,7 @@ constexpr int kSeeds = 5;
 struct PlannerCase {
   CfgCase problem;
   std::string planner;
-  roadmap::ParamMap params;
+  core::ParamMap params;
   std::string suffix;  // test-name suffix for a parameter setting
   double time_cap_s = kTimeCapS;
   int seeds = kSeeds;

@@ -77,10 +77,10 @@ TEST(ExecuteRun, ProblemParametersApplyToPlannersThatDeclareThem) {
   p.defaults.params = {{"steps", "64"}, {"k", "3"}};
   const PlannerRegistry& reg = builtin_planners();
   // prm declares k but not steps; prm-l declares both; a run's own value wins.
-  const ParamMap prm = with_problem_params(p, reg.info("prm"), {});
-  EXPECT_EQ(prm, (ParamMap{{"k", "3"}}));
-  const ParamMap l = with_problem_params(p, reg.info("prm-l"), {{"k", 5}});
-  EXPECT_EQ(l, (ParamMap{{"k", 5}, {"steps", "64"}}));
+  const core::ParamMap prm = with_problem_params(p, reg.info("prm"), {});
+  EXPECT_EQ(prm, (core::ParamMap{{"k", "3"}}));
+  const core::ParamMap l = with_problem_params(p, reg.info("prm-l"), {{"k", 5}});
+  EXPECT_EQ(l, (core::ParamMap{{"k", 5}, {"steps", "64"}}));
   const RunOutcome o = execute_run(p, "prm-l", {}, 3, kTimeLimit, 3000);
   EXPECT_EQ(o.record.status, core::PlanStatus::kSolved);
   p.defaults.params = {{"steps", "0"}};  // a grid of zero steps: the user's error, said so
@@ -97,7 +97,7 @@ class ThrowingPlanner final : public Planner {
 
 TEST(ExecuteRun, PlannerFailureIsAnErrorRecord) {
   PlannerRegistry r;
-  r.add({"bad", "throws", {}}, [](const Params&) { return std::make_unique<ThrowingPlanner>(); });
+  r.add({"bad", "throws", {}}, [](const core::Params&) { return std::make_unique<ThrowingPlanner>(); });
   const RunOutcome o = execute_run(test::point_problem(true), "bad", {}, 1, kTimeLimit, 100, r);
   EXPECT_EQ(o.record.status, core::PlanStatus::kError);
   EXPECT_EQ(o.record.message, "out of cheese");

@@ -17,12 +17,12 @@ namespace amp::test {
 
 inline std::vector<std::string> param_names(const roadmap::PlannerInfo& info) {
   std::vector<std::string> names;
-  for (const roadmap::ParamSpec& s : info.params) names.push_back(s.name);
+  for (const core::ParamSpec& s : info.params) names.push_back(s.name);
   return names;
 }
 
-inline const roadmap::ParamSpec& param_spec(const roadmap::PlannerInfo& info, const std::string& name) {
-  for (const roadmap::ParamSpec& s : info.params) {
+inline const core::ParamSpec& param_spec(const roadmap::PlannerInfo& info, const std::string& name) {
+  for (const core::ParamSpec& s : info.params) {
     if (s.name == name) return s;
   }
   throw std::logic_error("no parameter '" + name + "' in " + info.name);
@@ -42,7 +42,7 @@ std::string parameter_error(F&& f) {
 // `planner` with the one parameter `name` = `value` is refused with a one-line message
 // "<planner>: parameter '<name>': ..." that contains `part`.
 inline void expect_refused(const roadmap::PlannerRegistry& r, const std::string& planner, const std::string& name,
-                           const roadmap::ParamValue& value, const std::string& part) {
+                           const core::ParamValue& value, const std::string& part) {
   const std::string m = parameter_error([&] { r.make(planner, {{name, value}}); });
   ASSERT_FALSE(m.empty()) << planner << " accepted " << name << " = " << value.to_string();
   EXPECT_EQ(m.find('\n'), std::string::npos) << m;
@@ -53,12 +53,12 @@ inline void expect_refused(const roadmap::PlannerRegistry& r, const std::string&
 // Every declared parameter of `planner`: the default lies in the range, both ends of the range (each
 // choice, both booleans) are accepted, and values just outside are refused.
 inline void expect_declared_ranges_enforced(const roadmap::PlannerRegistry& r, const std::string& planner) {
-  for (const roadmap::ParamSpec& s : r.info(planner).params) {
+  for (const core::ParamSpec& s : r.info(planner).params) {
     SCOPED_TRACE(planner + ": " + s.name);
     EXPECT_FALSE(s.help.empty());
     switch (s.type) {
-      case roadmap::ParamType::kInteger:
-      case roadmap::ParamType::kReal:
+      case core::ParamType::kInteger:
+      case core::ParamType::kReal:
         ASSERT_TRUE(s.default_value.is_number());
         EXPECT_GE(s.default_value.number(), s.min);
         EXPECT_LE(s.default_value.number(), s.max);
@@ -67,14 +67,14 @@ inline void expect_declared_ranges_enforced(const roadmap::PlannerRegistry& r, c
         expect_refused(r, planner, s.name, s.min - 1.0, "is outside [");
         expect_refused(r, planner, s.name, s.max + 1.0, "is outside [");
         expect_refused(r, planner, s.name, "many", "expected a number");
-        if (s.type == roadmap::ParamType::kInteger) expect_refused(r, planner, s.name, s.min + 0.5, "expected an integer");
+        if (s.type == core::ParamType::kInteger) expect_refused(r, planner, s.name, s.min + 0.5, "expected an integer");
         break;
-      case roadmap::ParamType::kBool:
+      case core::ParamType::kBool:
         EXPECT_NO_THROW(r.make(planner, {{s.name, true}}));
         EXPECT_NO_THROW(r.make(planner, {{s.name, "false"}}));
         expect_refused(r, planner, s.name, "maybe", "true or false");
         break;
-      case roadmap::ParamType::kChoice:
+      case core::ParamType::kChoice:
         ASSERT_FALSE(s.choices.empty());
         EXPECT_NE(std::find(s.choices.begin(), s.choices.end(), s.default_value.to_string()), s.choices.end());
         for (const std::string& c : s.choices) EXPECT_NO_THROW(r.make(planner, {{s.name, c}})) << c;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "amp/core/run_record.hpp"
-#include "amp/roadmap/parameters.hpp"
+#include "amp/core/parameters.hpp"
 #include "amp/world/problem.hpp"
 
 namespace amp::bench {
@@ -18,8 +18,8 @@ namespace amp::bench {
 struct PlannerConfig {
   std::string label;  // unique in the experiment; names the configuration in every output
   std::string planner;  // name in the PlannerRegistry
-  roadmap::ParamMap params;
-  std::map<std::string, std::vector<roadmap::ParamValue>> draws;
+  core::ParamMap params;
+  std::map<std::string, std::vector<core::ParamValue>> draws;
 };
 
 struct ExperimentProblem {
@@ -66,7 +66,7 @@ std::uint64_t trial_seed(const Experiment& e, const TrialId& id);
 
 // The parameters a trial runs with: the configuration's fixed ones plus one value drawn uniformly
 // (from an Rng seeded by the trial seed) for every drawn parameter, in name order.
-roadmap::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std::string, std::string>* drawn);
+core::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std::string, std::string>* drawn);
 
 // One finished trial as the outputs see it.
 struct Trial {

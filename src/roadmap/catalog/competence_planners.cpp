@@ -21,10 +21,10 @@ void register_competence_prms(PlannerRegistry& registry) {
       {CompetenceKind::kLocal, "prm-l", "local competence O_th = 1 + n / r_s(v)"},
   };
   for (const Form& f : forms) {
-    std::vector<ParamSpec> specs = {competence_spec(f.kind)};
-    for (const ParamSpec& s : CompetencePrmSettings::schema().specs()) specs.push_back(s);
+    std::vector<core::ParamSpec> specs = {competence_spec(f.kind)};
+    for (const core::ParamSpec& s : CompetencePrmSettings::schema().specs()) specs.push_back(s);
     const std::string what = std::string("PRM with a bidirectional A* grid local planner (Isto 2003), ") + f.what;
-    registry.add(PlannerInfo{f.name, what, specs}, [f](const Params& p) -> std::unique_ptr<Planner> {
+    registry.add(PlannerInfo{f.name, what, specs}, [f](const core::Params& p) -> std::unique_ptr<Planner> {
       CompetencePrmSettings s = CompetencePrmSettings::schema().read(p);
       s.kind = f.kind;
       s.value = p.real(competence_parameter(f.kind));

@@ -9,7 +9,7 @@ namespace amp::roadmap {
 void register_prm(PlannerRegistry& registry) {
   registry.add({"prm", "probabilistic roadmap (Kavraki et al. 1996); lazy=true gives Lazy PRM (Bohlin & Kavraki 2000)",
                 PrmSettings::schema().specs()},
-               [](const Params& p) { return std::make_unique<Prm>(PrmSettings::schema().read(p)); });
+               [](const core::Params& p) { return std::make_unique<Prm>(PrmSettings::schema().read(p)); });
 }
 
 }  // namespace amp::roadmap

@@ -49,7 +49,7 @@ void register_sampler_prms(PlannerRegistry& registry) {
   registry.add({"gaussian-prm",
                 "PRM with Gaussian sampling (Boor, Overmars & van der Stappen 1999): free samples near obstacles",
                 GaussianPrmSettings::schema().specs()},
-               [](const Params& p) -> std::unique_ptr<Planner> {
+               [](const core::Params& p) -> std::unique_ptr<Planner> {
                  const GaussianPrmSettings g = GaussianPrmSettings::schema().read(p);
                  PrmParts parts;
                  parts.sampler = [g](const PlanningContext& ctx) -> std::unique_ptr<Sampler> {
@@ -64,7 +64,7 @@ void register_sampler_prms(PlannerRegistry& registry) {
                 "obstacle-based PRM (Amato et al. 1998): walk from a colliding state along a random ray to the "
                 "first free one",
                 ObprmSettings::schema().specs()},
-               [](const Params& p) -> std::unique_ptr<Planner> {
+               [](const core::Params& p) -> std::unique_ptr<Planner> {
                  const ObprmSettings s = ObprmSettings::schema().read(p);
                  ObprmSamplerSettings o;
                  o.max_attempts = s.max_attempts;
@@ -80,7 +80,7 @@ void register_sampler_prms(PlannerRegistry& registry) {
   registry.add({"bridge-prm",
                 "PRM with the bridge test (Hsu, Jiang, Reif & Sun 2003): free midpoints of short colliding pairs",
                 BridgePrmSettings::schema().specs()},
-               [](const Params& p) -> std::unique_ptr<Planner> {
+               [](const core::Params& p) -> std::unique_ptr<Planner> {
                  const BridgePrmSettings s = BridgePrmSettings::schema().read(p);
                  BridgeSamplerSettings b;
                  b.max_attempts = s.max_attempts;

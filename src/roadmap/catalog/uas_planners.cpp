@@ -13,14 +13,14 @@ void register_uas_planners(PlannerRegistry& registry) {
                 "Hybrid PRM (Hsu, Sanchez-Ante & Sun 2005) over uniform, Gaussian r and 2r, OBPRM (+ bridge, "
                 "expansion) samplers, with UAS's structural reward",
                 HybridPrmSettings::schema().specs()},
-               [](const Params& p) -> std::unique_ptr<Planner> {
+               [](const core::Params& p) -> std::unique_ptr<Planner> {
                  return make_hybrid_prm(HybridPrmSettings::schema().read(p));
                });
   registry.add({"uas",
                 "UAS (unsupervised adaptive strategy): regions by clustering a training roadmap, Hybrid PRM per "
                 "region in round robin",
                 UasSettings::schema().specs()},
-               [](const Params& p) -> std::unique_ptr<Planner> {
+               [](const core::Params& p) -> std::unique_ptr<Planner> {
                  return std::make_unique<Uas>(UasSettings::schema().read(p));
                });
 }

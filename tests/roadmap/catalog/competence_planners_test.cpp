@@ -35,16 +35,16 @@ TEST(CompetencePlanners, RegistersOnePlannerPerFormWithItsOwnParameterFirst) {
     const PlannerInfo& info = r.info(f.planner);
     EXPECT_EQ(amp::test::param_names(info),
               (std::vector<std::string>{f.parameter, "k", "steps", "a", "b", "max_cells"}));
-    const ParamSpec& own = info.params.front();
-    EXPECT_EQ(own.type, ParamType::kReal);
-    EXPECT_EQ(own.default_value, ParamValue(f.fallback));
+    const core::ParamSpec& own = info.params.front();
+    EXPECT_EQ(own.type, core::ParamType::kReal);
+    EXPECT_EQ(own.default_value, core::ParamValue(f.fallback));
     EXPECT_EQ(own.min, f.lo);
     EXPECT_EQ(own.max, f.hi);
     EXPECT_NE(info.help.find("Isto 2003"), std::string::npos) << info.help;
     // The grid's defaults (GridAStarSettings{}): 128 steps, f = 3 g + 5 h.
-    EXPECT_EQ(amp::test::param_spec(info, "steps").default_value, ParamValue(128));
-    EXPECT_EQ(amp::test::param_spec(info, "a").default_value, ParamValue(3));
-    EXPECT_EQ(amp::test::param_spec(info, "b").default_value, ParamValue(5));
+    EXPECT_EQ(amp::test::param_spec(info, "steps").default_value, core::ParamValue(128));
+    EXPECT_EQ(amp::test::param_spec(info, "a").default_value, core::ParamValue(3));
+    EXPECT_EQ(amp::test::param_spec(info, "b").default_value, core::ParamValue(5));
   }
 }
 

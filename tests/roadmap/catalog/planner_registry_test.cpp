@@ -27,9 +27,9 @@ TEST(PlannerRegistry, BuiltinHasPrmWithDescribedParameters) {
   EXPECT_TRUE(r.contains("prm"));
   const PlannerInfo& info = r.info("prm");
   std::vector<std::string> names;
-  for (const ParamSpec& s : info.params) names.push_back(s.name);
+  for (const core::ParamSpec& s : info.params) names.push_back(s.name);
   for (const char* n : {"k", "lazy", "smooth"}) EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
-  EXPECT_EQ(info.params.front().default_value, ParamValue(10));
+  EXPECT_EQ(info.params.front().default_value, core::ParamValue(10));
   EXPECT_FALSE(info.params.front().help.empty());
 }
 
@@ -67,9 +67,9 @@ TEST(PlannerRegistry, CustomPlannersAndChoices) {
   PlannerRegistry r;
   register_prm(r);
   int made = 0;
-  r.add({"toy", "a test planner", {{"mode", ParamType::kChoice, "fast", 0, 0, {"fast", "slow"}, "speed"},
-                                   {"gamma", ParamType::kReal, 0.5, 0.0, 1.0, {}, "mixing"}}},
-        [&made](const Params& p) {
+  r.add({"toy", "a test planner", {{"mode", core::ParamType::kChoice, "fast", 0, 0, {"fast", "slow"}, "speed"},
+                                   {"gamma", core::ParamType::kReal, 0.5, 0.0, 1.0, {}, "mixing"}}},
+        [&made](const core::Params& p) {
           EXPECT_EQ(p.choice("mode"), "slow");
           EXPECT_DOUBLE_EQ(p.real("gamma"), 0.5);  // default filled in
           ++made;

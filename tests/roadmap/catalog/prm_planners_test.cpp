@@ -25,11 +25,11 @@ TEST(PrmPlanners, RegistersPrmWithItsParametersAndDefaults) {
   EXPECT_EQ(amp::test::param_names(info),
             (std::vector<std::string>{"k", "lazy", "smooth", "smooth_attempts", "skip_same_component"}));
   // The defaults are PrmSettings{}'s: k 10, smoothing off with 100 attempts, every neighbour tried.
-  EXPECT_EQ(amp::test::param_spec(info, "k").default_value, ParamValue(10));
-  EXPECT_EQ(amp::test::param_spec(info, "lazy").default_value, ParamValue(0));
-  EXPECT_EQ(amp::test::param_spec(info, "smooth").default_value, ParamValue(0));
-  EXPECT_EQ(amp::test::param_spec(info, "smooth_attempts").default_value, ParamValue(100));
-  EXPECT_EQ(amp::test::param_spec(info, "skip_same_component").default_value, ParamValue(0));
+  EXPECT_EQ(amp::test::param_spec(info, "k").default_value, core::ParamValue(10));
+  EXPECT_EQ(amp::test::param_spec(info, "lazy").default_value, core::ParamValue(0));
+  EXPECT_EQ(amp::test::param_spec(info, "smooth").default_value, core::ParamValue(0));
+  EXPECT_EQ(amp::test::param_spec(info, "smooth_attempts").default_value, core::ParamValue(100));
+  EXPECT_EQ(amp::test::param_spec(info, "skip_same_component").default_value, core::ParamValue(0));
   EXPECT_EQ(amp::test::param_spec(info, "k").max, 1000.0);
 }
 

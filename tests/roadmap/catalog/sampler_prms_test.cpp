@@ -30,24 +30,24 @@ TEST(SamplerPrms, RegistersThreePlannersWithTheirParameters) {
   EXPECT_EQ(amp::test::param_names(r.info("bridge-prm")),
             (std::vector<std::string>{"k", "d", "d_scale", "max_attempts", "uniform_mix"}));
   // UAS's distances: Gaussian d = r, bridge length 2r.
-  EXPECT_EQ(amp::test::param_spec(r.info("gaussian-prm"), "d_scale").default_value, ParamValue(1.0));
-  EXPECT_EQ(amp::test::param_spec(r.info("bridge-prm"), "d_scale").default_value, ParamValue(2.0));
+  EXPECT_EQ(amp::test::param_spec(r.info("gaussian-prm"), "d_scale").default_value, core::ParamValue(1.0));
+  EXPECT_EQ(amp::test::param_spec(r.info("bridge-prm"), "d_scale").default_value, core::ParamValue(2.0));
   for (const char* name : {"gaussian-prm", "bridge-prm"}) {
-    const ParamSpec& d = amp::test::param_spec(r.info(name), "d");
-    EXPECT_EQ(d.default_value, ParamValue(0.0)) << name;  // 0 = auto
-    const ParamSpec& scale = amp::test::param_spec(r.info(name), "d_scale");
+    const core::ParamSpec& d = amp::test::param_spec(r.info(name), "d");
+    EXPECT_EQ(d.default_value, core::ParamValue(0.0)) << name;  // 0 = auto
+    const core::ParamSpec& scale = amp::test::param_spec(r.info(name), "d_scale");
     EXPECT_EQ(scale.min, 1e-6) << name;
     EXPECT_EQ(scale.max, 1e3) << name;
   }
   for (const char* name : {"gaussian-prm", "obprm", "bridge-prm"}) {
     // k is prm's own parameter, with prm's default and range.
-    const ParamSpec& k = amp::test::param_spec(r.info(name), "k");
-    EXPECT_EQ(k.default_value, ParamValue(10)) << name;
+    const core::ParamSpec& k = amp::test::param_spec(r.info(name), "k");
+    EXPECT_EQ(k.default_value, core::ParamValue(10)) << name;
     EXPECT_EQ(k.max, 1000.0) << name;
-    EXPECT_EQ(amp::test::param_spec(r.info(name), "max_attempts").default_value, ParamValue(100)) << name;
+    EXPECT_EQ(amp::test::param_spec(r.info(name), "max_attempts").default_value, core::ParamValue(100)) << name;
   }
-  EXPECT_EQ(amp::test::param_spec(r.info("obprm"), "max_steps").default_value, ParamValue(1000));
-  const ParamSpec& mix = amp::test::param_spec(r.info("bridge-prm"), "uniform_mix");
+  EXPECT_EQ(amp::test::param_spec(r.info("obprm"), "max_steps").default_value, core::ParamValue(1000));
+  const core::ParamSpec& mix = amp::test::param_spec(r.info("bridge-prm"), "uniform_mix");
   EXPECT_EQ(mix.min, 0.0);
   EXPECT_EQ(mix.max, 1.0);
 }

@@ -22,9 +22,9 @@ TEST(TreePlanners, RegistersRrtConnectWithItsRange) {
   EXPECT_EQ(r.names(), (std::vector<std::string>{"rrt-connect"}));
   const PlannerInfo& info = r.info("rrt-connect");
   EXPECT_EQ(amp::test::param_names(info), (std::vector<std::string>{"range"}));
-  const ParamSpec& range = amp::test::param_spec(info, "range");
-  EXPECT_EQ(range.type, ParamType::kReal);
-  EXPECT_EQ(range.default_value, ParamValue(0.0));  // 0 = OMPL's default, 0.2 x the space's extent
+  const core::ParamSpec& range = amp::test::param_spec(info, "range");
+  EXPECT_EQ(range.type, core::ParamType::kReal);
+  EXPECT_EQ(range.default_value, core::ParamValue(0.0));  // 0 = OMPL's default, 0.2 x the space's extent
   EXPECT_EQ(range.min, 0.0);
   EXPECT_EQ(range.max, 1e12);
 }

@@ -30,19 +30,19 @@ TEST(UasPlanners, RegistersHybridPrmAndUasWithTheirParameters) {
   for (const char* name : {"hybrid-prm", "uas"}) {
     const PlannerInfo& info = r.info(name);
     // UAS's figures: gamma 0.5 (chance and past performance weigh alike), alpha 4, cost per node.
-    EXPECT_EQ(amp::test::param_spec(info, "gamma").default_value, ParamValue(0.5)) << name;
-    EXPECT_EQ(amp::test::param_spec(info, "alpha").default_value, ParamValue(4.0)) << name;
-    EXPECT_EQ(amp::test::param_spec(info, "cost").default_value, ParamValue("node")) << name;
+    EXPECT_EQ(amp::test::param_spec(info, "gamma").default_value, core::ParamValue(0.5)) << name;
+    EXPECT_EQ(amp::test::param_spec(info, "alpha").default_value, core::ParamValue(4.0)) << name;
+    EXPECT_EQ(amp::test::param_spec(info, "cost").default_value, core::ParamValue("node")) << name;
     EXPECT_EQ(amp::test::param_spec(info, "sequence").choices, (std::vector<std::string>{"random", "halton"})) << name;
   }
   const PlannerInfo& uas = r.info("uas");
-  EXPECT_EQ(amp::test::param_spec(uas, "training_nodes").default_value, ParamValue(200));
+  EXPECT_EQ(amp::test::param_spec(uas, "training_nodes").default_value, core::ParamValue(200));
   EXPECT_EQ(amp::test::param_spec(uas, "training_nodes").min, 2.0);
-  EXPECT_EQ(amp::test::param_spec(uas, "training_k").default_value, ParamValue(5));
-  EXPECT_EQ(amp::test::param_spec(uas, "clustering").default_value, ParamValue("kmeans"));
+  EXPECT_EQ(amp::test::param_spec(uas, "training_k").default_value, core::ParamValue(5));
+  EXPECT_EQ(amp::test::param_spec(uas, "clustering").default_value, core::ParamValue("kmeans"));
   EXPECT_EQ(amp::test::param_spec(uas, "clustering").choices,
             (std::vector<std::string>{"kmeans", "ward", "pgmeans", "auto"}));
-  EXPECT_EQ(amp::test::param_spec(uas, "region_margin").default_value, ParamValue(0.0));
+  EXPECT_EQ(amp::test::param_spec(uas, "region_margin").default_value, core::ParamValue(0.0));
   EXPECT_EQ(amp::test::param_spec(uas, "schedule").choices,
             (std::vector<std::string>{"weighted", "round-robin", "adaptive"}));
 }

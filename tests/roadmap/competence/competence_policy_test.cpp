@@ -3,10 +3,13 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <utility>
 
 #include <gtest/gtest.h>
 
 #include "amp/core/error.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -87,6 +90,32 @@ TEST(CompetencePolicy, RefusesNonFiniteValues) {
   EXPECT_THROW(GlobalCompetence(-1), ParameterError);
   EXPECT_THROW(LocalCompetence{std::nan("")}, ParameterError);
   EXPECT_NO_THROW(StaticCompetence(1.0));  // O(C) >= 1: the least competence allowed
+}
+
+// Each form's parameter is written once: the catalog lists competence_spec() and the policies
+// refuse exactly the values outside its range.
+TEST(CompetencePolicy, PoliciesCheckTheCatalogsRange) {
+  const PlannerRegistry& registry = builtin_planners();
+  const std::pair<CompetenceKind, const char*> forms[] = {
+      {CompetenceKind::kStatic, "prm-c"}, {CompetenceKind::kGlobal, "prm-g"}, {CompetenceKind::kLocal, "prm-l"}};
+  for (const auto& [kind, planner] : forms) {
+    const core::ParamSpec& spec = competence_spec(kind);
+    EXPECT_EQ(spec.name, competence_parameter(kind));
+    EXPECT_EQ(registry.info(planner).params.front().name, spec.name);
+    EXPECT_EQ(registry.info(planner).params.front().min, spec.min);
+    EXPECT_EQ(registry.info(planner).params.front().max, spec.max);
+    const auto make = [kind = kind](double v) -> std::unique_ptr<CompetencePolicy> {
+      if (kind == CompetenceKind::kStatic) return std::make_unique<StaticCompetence>(v);
+      if (kind == CompetenceKind::kGlobal) return std::make_unique<GlobalCompetence>(v);
+      return std::make_unique<LocalCompetence>(v);
+    };
+    EXPECT_NO_THROW(make(spec.min));
+    EXPECT_NO_THROW(make(spec.max));
+    EXPECT_THROW(make(spec.min * 0.999), ParameterError);
+    EXPECT_THROW(make(spec.max * 1.001), ParameterError);
+    EXPECT_THROW(make(std::nan("")), ParameterError);
+    EXPECT_THROW(registry.make(planner, {{spec.name, spec.max * 1.001}}), ParameterError);
+  }
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ TEST(ExpansionSampler, RejectsNonsenseSettings) {
 TEST(ExpansionSampler, HybridPrmAndUasSolveWithItAndRepeat) {
   const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/walls.yaml");
   for (const char* planner : {"hybrid-prm", "uas"}) {
-    const ParamMap params{{"expansion", true}};
+    const core::ParamMap params{{"expansion", true}};
     const RunOutcome a = execute_run(p, planner, params, 5, 1e6, 20000);
     ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << planner;
     amp::test::expect_valid_path(p, a.path);

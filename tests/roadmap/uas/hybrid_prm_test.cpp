@@ -55,7 +55,7 @@ INSTANTIATE_TEST_SUITE_P(Bundled, SamplerPlanners,
 TEST(HybridPrm, HaltonSequenceSolvesWithValidPathsRepeatsAndDiffersFromRandom) {
   for (const char* problem : {"walls", "maze"}) {
     const world::Problem& p = bundled(problem);
-    const ParamMap halton{{"sequence", "halton"}};
+    const core::ParamMap halton{{"sequence", "halton"}};
     const RunOutcome a = execute_run(p, "hybrid-prm", halton, 21, kNoTimeLimit, kNodeLimit);
     ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << problem;
     amp::test::expect_valid_path(p, a.path);

@@ -27,75 +27,6 @@ const world::Problem& bundled(const std::string& name) {
   return name == "walls" ? walls : maze;
 }
 
-// A sampler that always returns the same state, to see which region drew a sample.
-class ConstantSampler final : public Sampler {
- public:
-  explicit ConstantSampler(double x) : x_(x) {}
-  bool sample(core::Rng&, State& out) override {
-    out = test::state2(x_, 0);
-    return true;
-  }
-
- private:
-  double x_;
-};
-
-TEST(RegionalSampler, TakesMSamplesFromEachRegionInTurn) {
-  const world::Problem p = test::point_problem(true);
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  std::vector<std::unique_ptr<HybridSampler>> regions;
-  for (int i = 0; i < 3; ++i) {
-    std::vector<HybridSampler::Arm> arms;
-    arms.push_back({"constant", std::make_unique<ConstantSampler>(i)});
-    regions.push_back(std::make_unique<HybridSampler>(std::move(arms), *checker));
-  }
-  RegionalSampler s(std::move(regions), 4);
-  core::Rng rng(1);
-  State q;
-  std::vector<int> drawn;
-  for (int i = 0; i < 24; ++i) {
-    ASSERT_TRUE(s.sample(rng, q));
-    s.reward_last(Insertion{0, false, 2, 2, 1});
-    drawn.push_back(static_cast<int>(q[0]));
-  }
-  for (int i = 0; i < 24; ++i) EXPECT_EQ(drawn[static_cast<std::size_t>(i)], (i / 4) % 3) << i;
-  std::map<std::string, double> extra;
-  s.report(extra);
-  EXPECT_EQ(extra.at("samples_constant"), 24.0);
-  EXPECT_EQ(extra.at("region1_rounds"), 2.0);
-  EXPECT_THROW(RegionalSampler({}, 4), ParameterError);
-}
-
-TEST(RegionalSampler, WeightedScheduleServesRegionsInProportionAndInAFixedOrder) {
-  const world::Problem p = test::point_problem(true);
-  core::Counters counters;
-  const auto checker = p.environment->make_checker(counters);
-  auto regions = [&] {
-    std::vector<std::unique_ptr<HybridSampler>> out;
-    for (int i = 0; i < 2; ++i) {
-      std::vector<HybridSampler::Arm> arms;
-      arms.push_back({"constant", std::make_unique<ConstantSampler>(i)});
-      out.push_back(std::make_unique<HybridSampler>(std::move(arms), *checker));
-    }
-    return out;
-  };
-  // Weights 3 and 1, smooth weighted round robin by hand: credits (3,1) -> 0 serves, (-1,1);
-  // (2,2) -> 0 (ties: the first), (-2,2); (1,3) -> 1, (1,-1); (4,0) -> 0, (0,0): then it repeats.
-  RegionalSampler s(regions(), 2, RegionSchedule::kWeighted, 0.5, {3.0, 1.0});
-  core::Rng rng(1);
-  State q;
-  std::vector<int> drawn;
-  for (int i = 0; i < 16; ++i) {
-    ASSERT_TRUE(s.sample(rng, q));
-    drawn.push_back(static_cast<int>(q[0]));
-  }
-  const std::vector<int> round_order = {0, 0, 1, 0};
-  for (int i = 0; i < 16; ++i) EXPECT_EQ(drawn[static_cast<std::size_t>(i)], round_order[(i / 2) % 4]) << i;
-  EXPECT_THROW(RegionalSampler(regions(), 2, RegionSchedule::kWeighted, 0.5, {1.0}), ParameterError);
-  EXPECT_THROW(RegionalSampler(regions(), 2, RegionSchedule::kWeighted, 0.5, {1.0, 0.0}), ParameterError);
-}
-
 // --- The planner ------------------------------------------------------------------------------------
 
 class UasPlanner : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
@@ -103,7 +34,7 @@ class UasPlanner : public ::testing::TestWithParam<std::tuple<std::string, std::
 TEST_P(UasPlanner, SolvesWithValidPathsTrainingCostAndRepeatsBitForBit) {
   const auto& [clustering, problem] = GetParam();
   const world::Problem& p = bundled(problem);
-  const ParamMap params{{"clustering", clustering}};
+  const core::ParamMap params{{"clustering", clustering}};
   const RunOutcome a = execute_run(p, "uas", params, 11, kNoTimeLimit, 20000);
   ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << clustering << " on " << problem;
   amp::test::expect_valid_path(p, a.path);
@@ -129,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(Bundled, UasPlanner,
 TEST(Uas, HaltonSequenceSolvesWithValidPathsAndRepeatsBitForBit) {
   for (const char* problem : {"walls", "maze"}) {
     const world::Problem& p = bundled(problem);
-    const ParamMap params{{"clustering", "ward"}, {"sequence", "halton"}};
+    const core::ParamMap params{{"clustering", "ward"}, {"sequence", "halton"}};
     const RunOutcome a = execute_run(p, "uas", params, 5, kNoTimeLimit, 20000);
     ASSERT_EQ(a.record.status, core::PlanStatus::kSolved) << problem;
     amp::test::expect_valid_path(p, a.path);

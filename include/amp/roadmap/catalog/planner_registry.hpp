@@ -3,7 +3,7 @@
 // (catalog/<family>_planners.cpp), reading each planner's parameters from its Settings' schema; a
 // new planner is its algorithm's file, a register call here, and one line in builtin_planners().
 #include "amp/core/method_catalog.hpp"
-#include "amp/roadmap/parameters.hpp"
+#include "amp/core/parameters.hpp"
 #include "amp/roadmap/planner.hpp"
 
 namespace amp::roadmap {
