@@ -11,12 +11,20 @@
 namespace amp::world {
 
 class OccupancyGrid;
+class PlanarWorld;
 
 // What `amp render` draws of a world or a robot: shapes in the plane (3-D worlds: their top view,
 // i.e. projection on z = 0), and for map worlds the occupancy grid itself.
 struct Outline {
   Shapes2d shapes;
   const OccupancyGrid* grid = nullptr;  // owned by the environment; null unless a map world
+};
+
+// The obstacles of a 2-D world as data, shared with the environment, for modules that run their
+// own geometry on them (nav: ray casting, a robot simulator). At most one is set.
+struct Obstacles2d {
+  std::shared_ptr<const PlanarWorld> planar;  // polygon / circle / segment worlds (YAML, 2-D .cfg)
+  std::shared_ptr<const OccupancyGrid> grid;  // map worlds
 };
 
 // A world with a robot in it: makes validity checkers and describes itself for drawing and for
@@ -42,6 +50,8 @@ class Environment {
   virtual double robot_min_diameter() const = 0;
   // Largest distance of a robot point from its reference frame origin (metric weight of rotations).
   virtual double robot_radius() const = 0;
+  // The obstacles of a 2-D world; both null for 3-D worlds.
+  virtual Obstacles2d obstacles_2d() const { return {}; }
 };
 
 }  // namespace amp::world
