@@ -24,8 +24,9 @@ Simulator::Simulator(std::shared_ptr<const WorldTimeline> timeline, std::shared_
     : timeline_(std::move(timeline)),
       robot_(std::move(robot)),
       settings_(settings),
-      sensors_((settings_.validate(), settings_.sensors)),
+      sensors_(settings_.sensors),
       state_(start) {
+  settings_.validate();
   if (!timeline_ || !robot_) throw ParameterError("simulator: no world or no robot");
   // A contact step of at most the radius never carries the disc across a wall of no thickness.
   if (settings_.contact_tolerance >= robot_->radius()) {
