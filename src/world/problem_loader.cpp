@@ -43,8 +43,10 @@ State read_state(const YamlFields& f, const core::Space& space) {
 Problem load_yaml_problem(const std::filesystem::path& file) {
   const YamlFields root(load_yaml_file(file), file, "");
   if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
+  // `events:` (obstacles that appear or vanish while a robot drives) belongs to the nav module's
+  // simulator, which reads it itself (nav::load_events); planners ignore it.
   root.allow_only({"name", "description", "bounds", "resolution", "world", "robot", "start", "goal", "seeds",
-                   "defaults", "edge_check"});
+                   "defaults", "edge_check", "events"});
   // Held here, for every world type: below the floor one edge would take longer than any run, and
   // the usual cause is an absolute step written where a fraction of the extent is expected.
   static_assert(core::kMinResolutionFraction == 1e-9, "the message names the floor");

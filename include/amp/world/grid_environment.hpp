@@ -78,6 +78,7 @@ class GridEnvironment final : public Environment {
   Eigen::Vector3d reference_point(const State& s) const override;
   double robot_min_diameter() const override { return min_diameter_; }
   double robot_radius() const override { return radius_; }
+  Obstacles2d obstacles_2d() const override { return {nullptr, obstacles_.grid_ptr()}; }
 
   const OccupancyGrid& grid() const { return obstacles_.grid(); }
   const GridObstacles& obstacles() const { return obstacles_; }

@@ -28,6 +28,7 @@ class PlanarEnvironment final : public Environment {
   Eigen::Vector3d reference_point(const State& s) const override;
   double robot_min_diameter() const override { return robot_.min_diameter(); }
   double robot_radius() const override { return robot_.radius(); }
+  Obstacles2d obstacles_2d() const override { return {world_, nullptr}; }
 
  private:
   std::shared_ptr<const PlanarWorld> world_;

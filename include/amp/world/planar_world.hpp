@@ -32,6 +32,8 @@ class PlanarGrid {
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   double cell_size() const { return cell_; }
+  // The box the cells tile (the obstacles' extent, slightly padded); empty when there are none.
+  const Eigen::AlignedBox2d& extent() const { return extent_; }
   // Inclusive cell range overlapping `box`; false when `box` misses the grid.
   bool cell_range(const Eigen::AlignedBox2d& box, int& x0, int& y0, int& x1, int& y1) const {
     if (empty() || !box.intersects(extent_)) return false;

@@ -16,10 +16,10 @@
 namespace amp::world {
 
 // Top-level keys a planar problem file may hold (load_problem reads start, goal, seeds, name,
-// defaults and edge_check).
-inline constexpr std::string_view kPlanarProblemKeys[] = {"bounds", "resolution", "world",    "robot",
-                                                          "start",  "goal",       "seeds",    "name",
-                                                          "defaults", "description", "edge_check"};
+// defaults and edge_check; `events` is read by the nav module, nav::parse_events).
+inline constexpr std::string_view kPlanarProblemKeys[] = {"bounds",   "resolution",  "world",      "robot",
+                                                          "start",    "goal",        "seeds",      "name",
+                                                          "defaults", "description", "edge_check", "events"};
 
 // World + robot + configuration space of a planar problem file.
 LoadedWorld parse_planar_world(const YamlFields& root);
