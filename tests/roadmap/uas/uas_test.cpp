@@ -15,17 +15,14 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
+#include "support/bundled_problems.hpp"
 
 namespace amp::roadmap {
 namespace {
 
 constexpr double kNoTimeLimit = 1e6;
 
-const world::Problem& bundled(const std::string& name) {
-  static const world::Problem walls = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/walls.yaml");
-  static const world::Problem maze = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/maze.yaml");
-  return name == "walls" ? walls : maze;
-}
+const world::Problem& bundled(const std::string& name) { return amp::test::bundled_problem(name + ".yaml"); }
 
 // --- The planner ------------------------------------------------------------------------------------
 

@@ -9,6 +9,7 @@
 #include "amp/world/planar_checker.hpp"
 #include "amp/world/planar_environment.hpp"
 #include "amp/world/polygon_geometry.hpp"
+#include "support/state_of.hpp"
 
 namespace amp::world {
 namespace {
@@ -16,12 +17,7 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kPi = std::numbers::pi;
 
-State st(std::initializer_list<double> v) {
-  State s(static_cast<int>(v.size()));
-  int i = 0;
-  for (double x : v) s[i++] = x;
-  return s;
-}
+using test::st;
 
 Polygon rect(double x0, double y0, double x1, double y1) { return Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}; }
 

@@ -7,6 +7,7 @@
 #include "amp/core/error.hpp"
 #include "amp/world/planar_environment.hpp"
 #include "amp/world/polygon_geometry.hpp"
+#include "support/state_of.hpp"
 
 namespace amp::world {
 namespace {
@@ -14,12 +15,7 @@ namespace {
 using V = Eigen::Vector2d;
 constexpr double kPi = std::numbers::pi;
 
-State st(std::initializer_list<double> v) {
-  State s(static_cast<int>(v.size()));
-  int i = 0;
-  for (double x : v) s[i++] = x;
-  return s;
-}
+using test::st;
 
 TEST(PlanarRobot, ArmKinematicsPlaceEachJointAtTheEndOfThePreviousLink) {
   const PlanarRobot arm = PlanarRobot::fixed_arm({1, 2, kPi / 2}, {{2, 0.2}, {1, 0.2}, {0.5, 0.1}});
