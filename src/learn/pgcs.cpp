@@ -185,7 +185,7 @@ void Pgcs::adapt(const Eigen::Vector2d& xi) {
   s2_sum_ += s2_[w] - s2_old;
 
   // Prior update of all clusters: pi_k += (p(k|xi) - pi_k) / l, through the lazy scale.
-  if (settings_.window == 1) {  // pi_k = p(k|xi): the scale would be 0
+  if (settings_.window == 1) {  // pi_k = p(k|xi): the scale would be 0, so this case is O(K log K) a step
     for (int k : alive_) ps_[k] = 0.0;
     scale_ = 1.0;
     log_scale_ = 0.0;

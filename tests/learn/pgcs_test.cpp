@@ -180,6 +180,18 @@ TEST(Pgcs, ManyStepsMatchANaiveComputation) {
   }
 }
 
+TEST(Pgcs, WindowOneSetsThePriorsToThePosteriors) {
+  // l = 1: pi_k = p(k|xi) after the step (the same numbers as OneAdaptationStepByHand), and
+  // eta = 0.73327338 / (1 * .5) > 1 is clamped to 1, so mu_A = xi.
+  Pgcs p(still(1));
+  const int a = p.add_cluster({0, 0}, 1, 0.5), b = p.add_cluster({3, 0}, 4, 0.5);
+  p.step({1, 1});
+  EXPECT_NEAR(p.prior(a), 0.7332733813807409, kTol);
+  EXPECT_NEAR(p.prior(b), 0.266726618619259, kTol);
+  EXPECT_EQ(p.last_step().eta, 1.0);
+  EXPECT_EQ(p.mean(a), Eigen::Vector2d(1, 1));
+}
+
 TEST(Pgcs, IndexedWinnerEqualsLinearScan) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     PgcsSettings s;
