@@ -1,0 +1,32 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amp/core/run_record.hpp"
+#include "amp/nav/nav_task.hpp"
+
+namespace amp::core {
+class Rng;
+class StopCondition;
+}  // namespace amp::core
+
+namespace amp::nav {
+
+// What one navigation run reports: the flat record `amp bench` writes (status, path_length,
+// wall_time_s, and the method's metrics in `extra`), and the robot's driven trace.
+struct NavigationOutcome {
+  core::RunRecord record;
+  std::vector<Eigen::Vector2d> trace;
+};
+
+// A navigation method (PGCS exploration and queries, policy search, DWA, SINS): it drives a
+// simulated robot in the task's world. Every random draw comes from `rng`; the run ends when
+// `stop` fires (status kTimeout) or the method is done. Implementations: PgcsNavigator.
+class Navigator {
+ public:
+  virtual ~Navigator() = default;
+  virtual NavigationOutcome run(const NavTask& task, const core::StopCondition& stop, core::Rng& rng) = 0;
+};
+
+}  // namespace amp::nav
