@@ -1,5 +1,6 @@
 #include "amp/nav/random_walk.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -36,7 +37,11 @@ void RandomWalk::turn(const Simulator& sim, core::Rng& rng) {
   if (settings_.lookahead > 0.0 && visited_) {
     double least = std::numeric_limits<double>::infinity();
     for (int i : clear_) {
-      const Eigen::Vector2d p = sim.state().position + settings_.lookahead * ring.direction(i, heading);
+      // As far as the way is open along that direction (a range finder's reach), so that the walk
+      // is drawn to open space it can get to, not to the unvisited far side of a wall.
+      const Eigen::Vector2d d = ring.direction(i, heading);
+      const double open = sim.next_world().ray_cast(sim.state().position, d, settings_.lookahead);
+      const Eigen::Vector2d p = sim.state().position + std::max(0.0, open - sim.robot().radius()) * d;
       const double v = visited_(p);
       if (v < least) least = v, pick = i;
     }

@@ -16,8 +16,9 @@ struct RandomWalkSettings {
   double speed = 0.01;           // distance per time step
   double turn_every = 50.0;      // mean steps between spontaneous heading changes (geometric)
   double avoid_distance = 0.01;  // a sensor reading ahead below this makes the walk turn away
-  // > 0: the novelty walk. At each turn it heads for the clear sensor direction whose point at this
-  // distance is least visited (lowest `visited` density), instead of a random clear one.
+  // > 0: the novelty walk. At each turn it heads for the clear sensor direction whose open end (as
+  // far as a range finder sees along it, up to this distance) is least visited (lowest `visited`
+  // density), instead of a random clear one. It assumes a range finder of this reach (a laser).
   double lookahead = 0.0;
 };
 

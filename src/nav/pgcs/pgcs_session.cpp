@@ -66,7 +66,11 @@ const core::SettingsSchema<PgcsRunSettings>& PgcsRunSettings::schema() {
        core::real_field<S>("reference_cell", &S::reference_cell, 0, 1e9,
                            "m, cell of the reference grid (0: longer side / 256)"),
        core::bool_field<S>("portals", &S::portals,
-                           "drive an edge through where the explorer crossed between its clusters")});
+                           "drive an edge through where the explorer crossed between its clusters"),
+       core::real_field<S>("unverified_weight", &S::unverified_weight, 0, 1e6,
+                           "extra route cost per length of an edge the explorer never crossed (needs portals)"),
+       core::bool_field<S>("exemplars", &S::exemplars,
+                           "drive to the visited position nearest each centre instead of the centre")});
   return schema;
 }
 
@@ -76,7 +80,8 @@ PgcsSession::PgcsSession(NavTask task, PgcsRunSettings run, learn::PgcsSettings 
       pgcs_(pgcs),
       memory_(task_.robot_radius),
       portals_(pgcs.window),
-      planner_(RouteSettings{run_.turn_weight * task_.robot_radius, run_.prior_weight * task_.robot_radius, run_.attach}),
+      planner_(RouteSettings{run_.turn_weight * task_.robot_radius, run_.prior_weight * task_.robot_radius, run_.attach,
+                             run_.portals ? run_.unverified_weight : 0.0}),
       explore_rng_(core::derive_seed(seed, kExplore)),
       query_rng_(core::derive_seed(seed, kQueries)),
       drive_rng_(core::derive_seed(seed, kDrive)),
@@ -129,7 +134,10 @@ void PgcsSession::track_clusters() {
     std::fill(alive_.begin(), alive_.end(), 0);
     for (int k : pgcs_.ids()) {
       const auto id = static_cast<std::size_t>(k);
-      if (id >= born_.size()) born_.resize(id + 1, -1), alive_.resize(id + 1, 0);
+      if (id >= born_.size()) {
+        born_.resize(id + 1, -1), alive_.resize(id + 1, 0);
+        exemplar_.resize(id + 1, Eigen::Vector2d::Zero()), exemplar_born_.resize(id + 1, -1);
+      }
       if (born_[id] < 0 || (!was_alive_.empty() && (id >= was_alive_.size() || !was_alive_[id]))) born_[id] = n;
       alive_[id] = 1;
     }
@@ -137,6 +145,14 @@ void PgcsSession::track_clusters() {
   }
   const int w = pgcs_.last_step().winner;
   const Eigen::Vector2d& x = simulator_.state().position;
+  if (w >= 0 && static_cast<std::size_t>(w) < born_.size()) {
+    const auto uw = static_cast<std::size_t>(w);
+    if (exemplar_born_[uw] != born_[uw] ||
+        (x - pgcs_.mean(w)).squaredNorm() < (exemplar_[uw] - pgcs_.mean(w)).squaredNorm()) {
+      exemplar_[uw] = x;
+      exemplar_born_[uw] = born_[uw];
+    }
+  }
   if (run_.portals && w >= 0 && last_winner_ >= 0 && w != last_winner_ && alive_[static_cast<std::size_t>(last_winner_)]) {
     portals_.observe(last_winner_, born_[static_cast<std::size_t>(last_winner_)], w, born_[static_cast<std::size_t>(w)],
                      0.5 * (x + last_position_));
@@ -150,6 +166,15 @@ const Eigen::Vector2d* PgcsSession::portal(int a, int b) const {
   const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
   if (ua >= born_.size() || ub >= born_.size()) return nullptr;
   return portals_.find(a, born_[ua], b, born_[ub]);
+}
+
+Eigen::Vector2d PgcsSession::node_point(int k) const {
+  const auto u = static_cast<std::size_t>(k);
+  if (!run_.exemplars) return pgcs_.mean(k);
+  // A cluster that has not won a step since it was made has no exemplar: nothing says the robot
+  // can stand in it, so routes leave it out.
+  if (u >= born_.size() || exemplar_born_[u] != born_[u]) return Eigen::Vector2d::Constant(std::nan(""));
+  return exemplar_[u];
 }
 
 const std::vector<std::uint8_t>& PgcsSession::reachable() {
@@ -259,12 +284,21 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
   simulator_.place(placed);
   rec.trace.push_back(start);
   failed_.clear();
+  int back = -1;  // the cluster the robot last drove from
   const StraightLegSettings leg{run_.block_distance * r, 20, 3.0};
   const double speed = run_.speed * r;
   for (;;) {
     const Eigen::Vector2d from = simulator_.state().position;
     const auto t0 = std::chrono::steady_clock::now();
-    const Route route = planner_.plan(pgcs_, memory_, from, target, failed_, r);
+    const Route route = planner_.plan(pgcs_, memory_, from, target, failed_, r,
+                                      [this](int a, int b) { return portal(a, b) != nullptr; },
+                                      [this](int k) { return node_point(k); }, back,
+                                      [this](int k, std::vector<int>& out) {
+                                        if (!run_.portals) return;
+                                        for (int j : portals_.crossed(k)) {
+                                          if (portal(k, j) != nullptr) out.push_back(j);
+                                        }
+                                      });
     rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (route.empty()) {
       rec.unsolvable = true;
@@ -287,14 +321,16 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
       if (res.end == LegEnd::kStopped) stopped = true;
       if (res.end != LegEnd::kBlocked) continue;
       const int u = l.from, v = l.to_node;
-      // A node is a cluster, not its centre: stopped within sigma of the centre, the robot is in it
-      // (a centre beside a wall or a door frame is often unreachable exactly).
-      if (!l.portal && v >= 0 && (simulator_.state().position - pgcs_.mean(v)).squaredNorm() <= pgcs_.variance(v)) {
+      // A node is a cluster, not a point: stopped within min(sigma, r) of its point, the robot is
+      // in it (a point beside a wall or a door frame is often unreachable exactly).
+      if (!l.portal && v >= 0 &&
+          (simulator_.state().position - l.to).squaredNorm() <= std::min(pgcs_.variance(v), r * r)) {
         continue;
       }
       blocked = true;
+      back = u >= 0 ? u : -1;
       if (u >= 0 && v >= 0) {
-        memory_.mark(u, v, pgcs_.mean(u), pgcs_.mean(v));
+        memory_.mark(u, v, node_point(u), node_point(v));
       } else if (v == Route::kTarget) {
         failed_.push_back({u >= 0 ? target : leg_start, u >= 0 ? u : Route::kTarget});
       } else {

@@ -26,6 +26,9 @@ RoutePlanner::RoutePlanner(RouteSettings settings) : settings_(settings) {
     throw ParameterError("prior_weight must be a finite number >= 0");
   }
   if (settings_.attach < 1) throw ParameterError("attach must be >= 1");
+  if (!(settings_.unverified_weight >= 0.0) || !std::isfinite(settings_.unverified_weight)) {
+    throw ParameterError("unverified_weight must be a finite number >= 0");
+  }
 }
 
 void RoutePlanner::nearest_centres(const learn::Pgcs& clusters, const Eigen::Vector2d& p,
@@ -37,6 +40,7 @@ void RoutePlanner::nearest_centres(const learn::Pgcs& clusters, const Eigen::Vec
   for (std::size_t i = 0; i < ids_.size(); ++i) {
     const int id = ids_[i];
     if (clusters.triangulation().hidden(id)) continue;  // a duplicate: its twin stands for it
+    if (!std::isfinite(points_[i].x())) continue;       // left out by the caller
     const bool excluded = std::any_of(failed.begin(), failed.end(), [&](const FailedAttachment& f) {
       return f.cluster == id && (f.point - p).squaredNorm() <= tol2;
     });
@@ -50,7 +54,9 @@ void RoutePlanner::nearest_centres(const learn::Pgcs& clusters, const Eigen::Vec
 
 Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, const Eigen::Vector2d& start,
                          const Eigen::Vector2d& target, std::span<const FailedAttachment> failed,
-                         double failed_tolerance) {
+                         double failed_tolerance, const std::function<bool(int, int)>& verified,
+                         const std::function<Eigen::Vector2d(int)>& where, int back,
+                         const std::function<void(int, std::vector<int>&)>& more_neighbours) {
   Route route;
   const std::vector<int>& alive = clusters.ids();
   const int k = static_cast<int>(alive.size());
@@ -63,7 +69,7 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   double prior_sum = 0.0;
   for (int i = 0; i < k; ++i) {
     local_of_[static_cast<std::size_t>(ids_[i])] = i;
-    points_[i] = clusters.mean(ids_[i]);
+    points_[i] = where ? where(ids_[i]) : clusters.mean(ids_[i]);
     prior_sum += clusters.prior(ids_[i]);
   }
   points_[s] = start;
@@ -102,9 +108,9 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   heap_.clear();
   const std::greater<std::pair<double, int>> later;
   auto h = [&](int v) { return (points_[v] - target).norm(); };
-  auto relax = [&](int from_state, int u, int v, int w, double g_v) {
+  auto relax = [&](int from_state, int u, int v, int w, double g_v, double factor = 1.0) {
     const std::size_t st = static_cast<std::size_t>(v) * n + static_cast<std::size_t>(w);
-    double c = g_v + (points_[w] - points_[v]).norm() + penalty_[w];
+    double c = g_v + factor * (points_[w] - points_[v]).norm() + penalty_[w];
     if (u != v) c += settings_.turn_weight * turn_angle(points_[v] - points_[u], points_[w] - points_[v]);
     if (stamp_[st] == gen && c >= g_[st]) return;
     stamp_[st] = gen;
@@ -135,15 +141,24 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
     }
     const double gv = g_[ust];
     if (v == s) {
-      for (int w : start_links_) relax(st, u, v, w, gv);
+      const double unverified = 1.0 + settings_.unverified_weight;
+      for (int w : start_links_) relax(st, u, v, w, gv, ids_[w] == back ? 1.0 : unverified);
+      if (back >= 0 && static_cast<std::size_t>(back) < local_of_.size() && local_of_[back] >= 0 &&
+          std::find(start_links_.begin(), start_links_.end(), local_of_[back]) == start_links_.end()) {
+        relax(st, u, v, local_of_[back], gv);
+      }
       if (direct) relax(st, u, v, t, gv);
       continue;
     }
     clusters.triangulation().neighbours(ids_[v], neighbours_);
+    if (more_neighbours) more_neighbours(ids_[v], neighbours_);
     for (int id : neighbours_) {
+      if (static_cast<std::size_t>(id) >= local_of_.size() || local_of_[static_cast<std::size_t>(id)] < 0) continue;
       const int w = local_of_[static_cast<std::size_t>(id)];
+      if (!std::isfinite(points_[w].x())) continue;
       if (memory.illegal(ids_[v], id, points_[v], points_[w])) continue;
-      relax(st, u, v, w, gv);
+      const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
+      relax(st, u, v, w, gv, known ? 1.0 : 1.0 + settings_.unverified_weight);
     }
     if (std::find(target_links_.begin(), target_links_.end(), v) != target_links_.end()) relax(st, u, v, t, gv);
   }

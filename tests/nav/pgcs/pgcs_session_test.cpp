@@ -54,12 +54,26 @@ TEST(PgcsSession, ExplorationStaysFreeAndLearnsClusters) {
   }
 }
 
+// A 2 m x 1 m room with a box in its middle.
+NavTask room_task() {
+  world::Shapes2d s;
+  s.polygons.push_back({{{0.9, 0.35}, {1.1, 0.35}, {1.1, 0.65}, {0.9, 0.65}}});
+  NavTask t;
+  t.name = "room";
+  t.robot_radius = 0.05;
+  t.start = V(0.3, 0.5);
+  t.goal = t.start;
+  t.timeline = std::make_shared<const WorldTimeline>(
+      std::make_shared<const PolygonNavWorld>(s, Eigen::AlignedBox2d(V(0, 0), V(2, 1))), std::vector<WorldEvent>{});
+  return t;
+}
+
 TEST(PgcsSession, QueriesDriveFreePathsFromStartToTarget) {
-  const NavTask task = make_nav_task(test::bundled_problem("office-map.yaml"));
-  PgcsSession s(task, small_run(4000, 6), small_pgcs(), 3);
-  s.explore(4000);
-  const auto pairs = s.draw_queries(6);
-  ASSERT_EQ(pairs.size(), 6u);
+  const NavTask task = room_task();
+  PgcsSession s(task, small_run(6000, 8), small_pgcs(), 3);
+  s.explore(6000);
+  const auto pairs = s.draw_queries(8);
+  ASSERT_EQ(pairs.size(), 8u);
   int solved = 0;
   for (const auto& [a, b] : pairs) {
     const QueryRecord q = s.query(a, b);

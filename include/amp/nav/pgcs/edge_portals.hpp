@@ -1,6 +1,7 @@
 #pragma once
 #include <map>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -21,6 +22,8 @@ class EdgePortals {
   // The portal of the pair, or null when the robot never crossed between these two clusters.
   const Eigen::Vector2d* find(int a, long born_a, int b, long born_b) const;
   std::size_t size() const { return portals_.size(); }
+  // The clusters `a` was ever seen crossing to, ascending (some may be stale: check with find()).
+  const std::vector<int>& crossed(int a) const;
 
  private:
   struct Portal {
@@ -30,6 +33,7 @@ class EdgePortals {
   };
   long memory_;
   std::map<std::pair<int, int>, Portal> portals_;  // (smaller id, larger id)
+  std::vector<std::vector<int>> crossed_;           // by id
 };
 
 }  // namespace amp::nav

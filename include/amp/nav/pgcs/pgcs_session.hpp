@@ -45,6 +45,8 @@ struct PgcsRunSettings {
   double block_distance = 0.5;               // radii: a sensor reading ahead below this is a block
   double reference_cell = 0.0;               // m, the reference grid's cell; 0: longer side / 256
   bool portals = true;                       // drive an edge through where the explorer crossed it (EdgePortals)
+  double unverified_weight = 1.0;            // extra route cost per length of an edge never seen crossed
+  bool exemplars = true;                     // drive to each cluster's exemplar, not to its centre
   static const core::SettingsSchema<PgcsRunSettings>& schema();
   void validate() const { schema().validate(*this); }
 };
@@ -104,6 +106,10 @@ class PgcsSession {
   const EdgePortals& portals() const { return portals_; }
   // The portal of the edge a-b (null when none is known or portals are off).
   const Eigen::Vector2d* portal(int a, int b) const;
+  // Where the robot drives to reach cluster k: its exemplar (the position it won nearest to its
+  // centre, a point where the robot has stood), or its centre when exemplars are off. A centre is
+  // a mean of positions and may lie inside an obstacle the cluster wraps around (a desk).
+  Eigen::Vector2d node_point(int k) const;
   const std::vector<CurvePoint>& curves() const { return curves_; }
   // Exploration positions, one every few steps (for drawing).
   const std::vector<Eigen::Vector2d>& exploration_trace() const { return explored_; }
@@ -124,6 +130,8 @@ class PgcsSession {
   EdgeMemory memory_;
   EdgePortals portals_;
   std::vector<long> born_;        // by cluster id: the step it was (last) created
+  std::vector<Eigen::Vector2d> exemplar_;  // by cluster id
+  std::vector<long> exemplar_born_;        // by cluster id: born_ of the cluster the exemplar is of
   std::vector<std::uint8_t> alive_;  // by cluster id, as of the last check
   int last_winner_ = -1;
   Eigen::Vector2d last_position_ = Eigen::Vector2d::Zero();

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -17,6 +18,9 @@ struct RouteSettings {
   double turn_weight = 1.0;   // cost per radian turned between successive edges, in length units
   double prior_weight = 1.0;  // cost per unit of log(mean prior / prior) entering a cluster, in length units
   int attach = 3;             // the start and the target join this many nearest centres
+  // Extra cost per length of an edge between clusters that is not `verified` (the robot was never
+  // seen crossing between them): length * (1 + unverified_weight). 0: the paper's A*.
+  double unverified_weight = 0.0;
 };
 
 // A leg end that failed for this query: the robot, near `point`, could not drive to (or from)
@@ -44,7 +48,9 @@ struct Route {
 // so smooth routes through often-visited clusters win. The turn term makes the cost depend on the
 // previous node: the search runs on directed edges (u, v). The heuristic |v - target| is
 // admissible and consistent (every other term is >= 0), so the first expansion of the target is
-// optimal. Edges the EdgeMemory holds and the failed attachments are left out.
+// optimal. Edges the EdgeMemory holds and the failed attachments are left out. Beyond the paper,
+// edges the robot has not been seen crossing may cost more (unverified_weight), so that routes
+// keep to the ways the robot actually went (through doors, not through the walls beside them).
 class RoutePlanner {
  public:
   // Throws ParameterError for negative weights or attach < 1.
@@ -53,8 +59,16 @@ class RoutePlanner {
   const RouteSettings& settings() const { return settings_; }
   // An optimal route; empty when the graph (less its illegal edges) does not join them.
   // `failed_tolerance`: a failed attachment applies to points within this distance of its point.
+  // `verified(a, b)`: whether the edge between clusters a and b is known to be crossed (empty: all);
+  // the start's links are unverified too, but for `back`, the cluster the robot has just driven
+  // from (it can always return the way it came), which the start joins as well.
+  // `where(k)`: the point that stands for cluster k (empty: its centre); NaN leaves k out.
+  // `more_neighbours(k, out)` appends edges beyond the Delaunay ones (clusters the robot crossed to).
   Route plan(const learn::Pgcs& clusters, const EdgeMemory& memory, const Eigen::Vector2d& start,
-             const Eigen::Vector2d& target, std::span<const FailedAttachment> failed, double failed_tolerance);
+             const Eigen::Vector2d& target, std::span<const FailedAttachment> failed, double failed_tolerance,
+             const std::function<bool(int, int)>& verified = {},
+             const std::function<Eigen::Vector2d(int)>& where = {}, int back = -1,
+             const std::function<void(int, std::vector<int>&)>& more_neighbours = {});
 
  private:
   // The `attach` nearest triangulated centres to p, without failed ones, into out (local indices).

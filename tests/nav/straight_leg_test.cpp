@@ -1,0 +1,70 @@
+#include "amp/nav/straight_leg.hpp"
+
+#include <gtest/gtest.h>
+
+#include "amp/core/rng.hpp"
+#include "amp/nav/holonomic_disc.hpp"
+#include "amp/nav/polygon_nav_world.hpp"
+#include "amp/nav/simulator.hpp"
+
+namespace amp::nav {
+namespace {
+
+using V = Eigen::Vector2d;
+
+// A 2 m x 1 m room with a wall across x = 1 from y = 0 to y = 0.7 (a gap above it).
+Simulator make_sim(V start, double noise = 0.0) {
+  world::Shapes2d s;
+  s.polygons.push_back({{{0.98, 0.0}, {1.02, 0.0}, {1.02, 0.7}, {0.98, 0.7}}});
+  auto w = std::make_shared<const PolygonNavWorld>(s, Eigen::AlignedBox2d(V(0, 0), V(2, 1)));
+  SimulatorSettings settings;
+  settings.sensors.max_range = 0.15;
+  settings.sensors.noise_stddev = noise;
+  return Simulator(std::make_shared<const WorldTimeline>(w, std::vector<WorldEvent>{}),
+                   std::make_shared<const HolonomicDisc>(HolonomicDiscSettings{0.05, 1.0}), RobotState{start}, settings);
+}
+
+TEST(StraightLeg, ArrivesExactlyInTheOpen) {
+  Simulator sim = make_sim(V(0.2, 0.2));
+  core::Rng rng(1);
+  std::vector<V> trace;
+  const LegResult r = drive_straight(sim, V(0.8, 0.5), 0.05, {0.025, 20, 3.0}, rng, nullptr, &trace);
+  EXPECT_EQ(r.end, LegEnd::kArrived);
+  EXPECT_EQ(sim.state().position, V(0.8, 0.5));
+  EXPECT_NEAR(r.travelled, (V(0.8, 0.5) - V(0.2, 0.2)).norm(), 1e-12);
+  EXPECT_EQ(r.steps, 14u);  // ceil(0.6708 / 0.05)
+  EXPECT_EQ(trace.size(), r.steps);
+}
+
+TEST(StraightLeg, WallAheadIsSensedBeforeContact) {
+  Simulator sim = make_sim(V(0.5, 0.3));
+  core::Rng rng(1);
+  std::vector<V> trace;
+  // A block distance longer than a step: the robot sees the wall before its next step would reach it.
+  const LegResult r = drive_straight(sim, V(1.5, 0.3), 0.05, {0.06, 20, 3.0}, rng, nullptr, &trace);
+  EXPECT_EQ(r.end, LegEnd::kBlocked);
+  // Stopped short of the wall (its face at x = 0.98, so contact at 0.93), never touching it.
+  EXPECT_LT(sim.state().position.x(), 0.93 - 1e-9);
+  EXPECT_GT(sim.state().position.x(), 0.93 - 0.06 - 0.05);
+  for (const V& p : trace) EXPECT_TRUE(sim.world().disc_free(p, 0.05));
+}
+
+TEST(StraightLeg, TouchAloneStopsAtTheWall) {
+  Simulator sim = make_sim(V(0.5, 0.3));
+  core::Rng rng(1);
+  const LegResult r = drive_straight(sim, V(1.5, 0.3), 0.05, {0.0, 20, 3.0}, rng, nullptr, nullptr);
+  EXPECT_EQ(r.end, LegEnd::kBlocked);
+  EXPECT_NEAR(sim.state().position.x(), 0.93, 1e-5);  // in contact with the wall's face
+  EXPECT_TRUE(sim.world().disc_free(sim.state().position, 0.05));
+}
+
+TEST(StraightLeg, WallBesideTheWayIsNoBlock) {
+  // Along the wall's top edge at clearance 0.02: sensors see it to the side, not ahead.
+  Simulator sim = make_sim(V(0.5, 0.77), 0.001);
+  core::Rng rng(3);
+  const LegResult r = drive_straight(sim, V(1.5, 0.77), 0.05, {0.025, 20, 3.0}, rng, nullptr, nullptr);
+  EXPECT_EQ(r.end, LegEnd::kArrived);
+}
+
+}  // namespace
+}  // namespace amp::nav
