@@ -1,0 +1,153 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amp/core/rng.hpp"
+#include "amp/core/settings_schema.hpp"
+#include "amp/learn/pgcs.hpp"
+#include "amp/nav/nav_task.hpp"
+#include "amp/nav/pgcs/edge_memory.hpp"
+#include "amp/nav/pgcs/edge_portals.hpp"
+#include "amp/nav/pgcs/route_planner.hpp"
+#include "amp/nav/random_walk.hpp"
+#include "amp/nav/reference_grid.hpp"
+#include "amp/nav/simulator.hpp"
+
+namespace amp::core {
+class StopCondition;
+}
+
+namespace amp::nav {
+
+// How a PGCS session explores and answers queries; lengths are in robot radii, so one setting
+// suits a Khepera in a maze and a wheelchair in an office.
+struct PgcsRunSettings {
+  long steps = 200000;                       // exploration steps (simulator time steps)
+  int queries = 100;                         // random query pairs after exploring
+  int curve_points = 100;                    // samples of the curves over the exploration
+  std::string exploration = "random-walk";   // random-walk | novelty
+  double speed = 0.4;                        // radii per time step
+  double turn_every = 50.0;                  // random walk: mean steps between heading changes
+  double avoid_distance = 0.5;               // radii: a sensor reading below this turns the walk
+  double sensor_range = 1.5;                 // radii beyond the rim
+  double sensor_noise = 0.01;                // radii (standard deviation)
+  double turn_weight = 1.0;                  // route cost per radian turned, in radii
+  double prior_weight = 1.0;                 // route cost per unit of log(mean prior / prior), in radii
+  int attach = 3;                            // start and target join this many nearest centres
+  int max_replans = 25;                      // a query gives up after this many replans
+  double block_distance = 0.5;               // radii: a sensor reading ahead below this is a block
+  double reference_cell = 0.0;               // m, the reference grid's cell; 0: longer side / 256
+  bool portals = true;                       // drive an edge through where the explorer crossed it (EdgePortals)
+  static const core::SettingsSchema<PgcsRunSettings>& schema();
+  void validate() const { schema().validate(*this); }
+};
+
+// One sample of the exploration curves.
+struct CurvePoint {
+  long step = 0;
+  int clusters = 0;
+  double coverage = 0.0;            // share of the reachable free cells within 2 sigma of a centre
+  double quantisation_error = 0.0;  // RMS distance from the reachable free cells to their nearest centre
+  double closed_prior = 0.0;        // prior mass of clusters the robot can no longer reach (a door closed)
+};
+
+// One query driven by trial and error.
+struct QueryRecord {
+  Eigen::Vector2d start = Eigen::Vector2d::Zero(), target = Eigen::Vector2d::Zero();
+  bool solved = false;
+  bool unsolvable = false;  // the graph, less its illegal edges, does not join them (no route left)
+  int replans = 0;
+  double length = 0.0;      // driven
+  double shortest = 0.0;    // grid-shortest in the world at query time (+inf: not connected)
+  double ratio = 0.0;       // length / shortest when solved, else 0
+  double plan_time_s = 0.0; // route planning, not driving (CPU of the A* calls)
+  std::size_t illegal_edges = 0;            // known after this query
+  std::vector<Eigen::Vector2d> trace;       // driven positions
+  std::vector<Eigen::Vector2d> blocks;      // where the robot stopped and replanned
+};
+
+// PGCS exploration and trial-and-error queries (Vlassis, Papakonstantinou & Tsanakas): a disc robot
+// driven by an exploration strategy streams its positions into learn::Pgcs; queries then plan on the
+// centres' Delaunay graph (RoutePlanner), drive each leg in the simulator, mark blocked edges
+// illegal (EdgeMemory, kept across queries) and replan from where the robot stopped. Every random
+// draw comes from the session's seed: exploration and the query pairs have streams of their own,
+// so two settings that explore differently are asked the same queries.
+class PgcsSession {
+ public:
+  // Throws ParameterError for bad settings.
+  PgcsSession(NavTask task, PgcsRunSettings run, learn::PgcsSettings pgcs, std::uint64_t seed);
+  ~PgcsSession();
+
+  // Explores `steps` more steps, sampling the curves every steps/curve_points. Returns false when
+  // `stop` fired first. `progress(done)` is called at each curve sample.
+  bool explore(long steps, const core::StopCondition* stop = nullptr,
+               const std::function<void(long done)>& progress = {});
+  // `count` pairs of free points, both reachable from the task's start in the world as it is now.
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> draw_queries(int count);
+  // Drives from `start` to `target` (the robot is placed at start). Throws ParameterError when a
+  // point is outside the world or the disc is not free there.
+  QueryRecord query(const Eigen::Vector2d& start, const Eigen::Vector2d& target, const core::StopCondition* stop = nullptr);
+
+  double coverage() const;
+  double quantisation_error() const;
+  const NavTask& task() const { return task_; }
+  const PgcsRunSettings& settings() const { return run_; }
+  const learn::Pgcs& clusters() const { return pgcs_; }
+  const EdgeMemory& memory() const { return memory_; }
+  const EdgePortals& portals() const { return portals_; }
+  // The portal of the edge a-b (null when none is known or portals are off).
+  const Eigen::Vector2d* portal(int a, int b) const;
+  const std::vector<CurvePoint>& curves() const { return curves_; }
+  // Exploration positions, one every few steps (for drawing).
+  const std::vector<Eigen::Vector2d>& exploration_trace() const { return explored_; }
+  const NavWorld& world() const { return simulator_.world(); }
+  const ReferenceGrid& reference() const { return reference_; }
+  long steps() const { return explore_steps_; }
+
+ private:
+  CurvePoint sample();
+  // Notes births of clusters (after PGCS's insertions and deletions) and the crossing of this step.
+  void track_clusters();
+  // The free cells reachable from the task's start in the current world (cached per world version).
+  const std::vector<std::uint8_t>& reachable();
+
+  NavTask task_;
+  PgcsRunSettings run_;
+  learn::Pgcs pgcs_;
+  EdgeMemory memory_;
+  EdgePortals portals_;
+  std::vector<long> born_;        // by cluster id: the step it was (last) created
+  std::vector<std::uint8_t> alive_;  // by cluster id, as of the last check
+  int last_winner_ = -1;
+  Eigen::Vector2d last_position_ = Eigen::Vector2d::Zero();
+  RoutePlanner planner_;
+  core::Rng explore_rng_, query_rng_, drive_rng_;
+  Simulator simulator_;
+  RandomWalk walk_;
+  ReferenceGrid reference_;  // of the base world (coverage and quantisation error)
+  std::vector<std::uint8_t> base_reachable_;
+  std::unique_ptr<ReferenceGrid> current_;   // of the world at the current step (queries, closed prior)
+  std::size_t current_version_ = static_cast<std::size_t>(-1);
+  std::vector<std::uint8_t> current_reachable_;
+  std::vector<CurvePoint> curves_;
+  std::vector<Eigen::Vector2d> explored_;
+  std::vector<FailedAttachment> failed_;
+  struct Leg {
+    Eigen::Vector2d to;
+    int from, to_node;  // the route edge this leg drives
+    bool portal;        // to its portal (then on to to_node's centre)
+  };
+  std::vector<Leg> legs_;
+  std::vector<std::uint8_t> was_alive_;
+  long explore_steps_ = 0;
+  bool last_blocked_ = false;
+};
+
+}  // namespace amp::nav
