@@ -10,6 +10,8 @@
 
 #include "amp/bench/method_runner.hpp"
 #include "amp/core/error.hpp"
+#include "amp/nav/navigator_catalog.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
 
 namespace amp::bench {
 namespace {
@@ -84,6 +86,14 @@ TEST_F(ExperimentMethodsTest, AnUnknownMethodNamesBothCatalogs) {
   EXPECT_TRUE(has(scalar, "planners[0]") && has(scalar, "'nope'")) << scalar;
   EXPECT_THROW(method_kind("nope"), ParameterError);
   EXPECT_EQ(method_kind("prm"), MethodKind::kPlanner);
+}
+
+// An experiment names a method by name alone, so no name may be in both catalogs.
+TEST(MethodCatalogs, NoNameIsBothAPlannerAndANavigationMethod) {
+  for (const std::string& name : nav::builtin_navigators().names()) {
+    EXPECT_FALSE(roadmap::builtin_planners().contains(name)) << name;
+    EXPECT_EQ(method_kind(name), MethodKind::kNavigator) << name;
+  }
 }
 
 }  // namespace
