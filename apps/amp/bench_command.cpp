@@ -9,8 +9,8 @@
 #include "amp/bench/bench_runner.hpp"
 #include "amp/bench/experiment.hpp"
 #include "amp/bench/merge.hpp"
+#include "amp/bench/method_listing.hpp"
 #include "amp/core/error.hpp"
-#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "mpi_session.hpp"
@@ -70,29 +70,9 @@ std::function<void(const bench::Progress&)> progress_printer() {
   };
 }
 
-void print_planners() {
-  const auto& registry = roadmap::builtin_planners();
-  for (const std::string& name : registry.names()) {
-    const auto& info = registry.info(name);
-    std::cout << name << "  " << info.help << '\n';
-    for (const auto& p : info.params) {
-      std::cout << "    " << p.name << " (" << core::to_string(p.type) << ", default "
-                << p.default_value.to_string();
-      if (p.type == core::ParamType::kInteger || p.type == core::ParamType::kReal) {
-        std::cout << ", range [" << p.min << ", " << p.max << "]";
-      }
-      if (!p.choices.empty()) {
-        std::cout << ", one of";
-        for (const auto& c : p.choices) std::cout << ' ' << c;
-      }
-      std::cout << ")  " << p.help << '\n';
-    }
-  }
-}
-
 int run_bench(const BenchOptions& o) {
   if (o.list) {
-    print_planners();
+    bench::list_methods(std::cout);
     return kExitOk;
   }
   if (o.experiment.empty()) throw Error("bench: give an experiment file (or --list)");
@@ -186,7 +166,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--runs", o->runs, "Override the file's runs per planner (a quick look)")->check(positive_integer());
   cmd->add_option("--time-limit", o->time_limit, "Override the file's time limit per run, seconds")
       ->check(positive_number());
-  cmd->add_flag("--list", o->list, "List the planners and their parameters");
+  cmd->add_flag("--list", o->list, "List the planners and navigation methods with their parameters");
   cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
 
   auto m = std::make_shared<MergeOptions>();

@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "amp/bench/method_runner.hpp"
 #include "amp/bench/outputs.hpp"
 #include "amp/bench/runs_csv.hpp"
 #include "amp/core/error.hpp"
-#include "amp/roadmap/run.hpp"
 
 namespace amp::bench {
 
@@ -97,8 +97,8 @@ Trial run_trial(const Experiment& e, std::size_t index, const std::atomic<bool>*
   const PlannerConfig& config = e.planners[t.id.planner];
   const core::ParamMap params = trial_params(e, t.id, &t.drawn);
   try {
-    roadmap::RunOutcome run = roadmap::execute_run(*problem.problem, config.planner, params, t.seed, e.time_limit_s,
-                                                   e.node_limit, roadmap::builtin_planners(), cancel);
+    MethodRun run = run_method(*problem.problem, config.kind, config.planner, params, t.seed, e.time_limit_s,
+                               e.node_limit, cancel);
     t.record = std::move(run.record);
     if (path != nullptr) *path = std::move(run.path);
   } catch (const std::exception& ex) {

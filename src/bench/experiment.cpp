@@ -3,9 +3,14 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
+#include "amp/bench/cost_metric.hpp"
+#include "amp/bench/method_runner.hpp"
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
+#include "amp/nav/nav_task.hpp"
+#include "amp/nav/navigator_catalog.hpp"
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
@@ -69,18 +74,20 @@ PlannerConfig parse_planner(const world::YamlFields& f) {
   return c;
 }
 
-// Builds the planner once per drawn value, and once with each problem's parameter defaults, so a
-// bad name, type or range fails before any run.
-void check_planner(const PlannerConfig& c, const std::vector<ExperimentProblem>& problems,
-                   const world::YamlFields& where) {
-  const auto& registry = roadmap::builtin_planners();
+// Builds the method once, once per drawn value and, for a planner, once with each problem's
+// parameter defaults, so a bad name, type or range fails before any run.
+template <class Registry>
+void check_method(const Registry& registry, const PlannerConfig& c, const std::vector<ExperimentProblem>& problems,
+                  const world::YamlFields& where) {
   try {
     registry.make(c.planner, c.params);
-    for (const ExperimentProblem& p : problems) {
-      try {
-        registry.make(c.planner, roadmap::with_problem_params(*p.problem, registry.info(c.planner), c.params));
-      } catch (const Error& e) {
-        throw ParameterError("with problem '" + p.label + "' (its defaults.params): " + e.what());
+    if constexpr (std::is_same_v<Registry, roadmap::PlannerRegistry>) {  // navigators read no problem defaults
+      for (const ExperimentProblem& p : problems) {
+        try {
+          registry.make(c.planner, roadmap::with_problem_params(*p.problem, registry.info(c.planner), c.params));
+        } catch (const Error& e) {
+          throw ParameterError("with problem '" + p.label + "' (its defaults.params): " + e.what());
+        }
       }
     }
     for (const auto& [name, values] : c.draws) {
@@ -95,12 +102,26 @@ void check_planner(const PlannerConfig& c, const std::vector<ExperimentProblem>&
   }
 }
 
+// A navigation method runs on a disc robot in a 2-D world: the task of every problem is made once
+// (the first navigation method's entry names the failure), so a problem no navigator can take fails
+// before any run.
+void check_nav_tasks(const std::vector<ExperimentProblem>& problems, const world::YamlFields& where) {
+  for (const ExperimentProblem& p : problems) {
+    try {
+      nav::make_nav_task(*p.problem);
+    } catch (const Error& e) {
+      where.fail("", "problem '" + p.label + "' cannot be given to a navigation method: " + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 std::string experiment_fingerprint(const Experiment& e) {
   std::ostringstream canon;
   canon << "seed=" << e.seed << ";runs=" << e.runs << ";time=" << e.time_limit_s << ";nodes=" << e.node_limit << ';';
   if (e.common_seeds) canon << "common_seeds;";  // only when set: older fingerprints stay valid
+  if (e.cost != kDefaultCost) canon << "cost=" << e.cost << ';';  // likewise
   for (const auto& p : e.problems) canon << "problem=" << p.label << ':' << fnv1a(read_file(p.file)) << ';';
   for (const auto& c : e.planners) {
     canon << "planner=" << c.label << ':' << c.planner;
@@ -150,7 +171,8 @@ Experiment load_experiment(const std::filesystem::path& file) {
   const world::YamlFields root(world::load_yaml_file(file), file, "");
   if (!root.is_map()) root.fail("", "an experiment file must be a YAML mapping");
   root.allow_only(
-      {"name", "description", "seed", "runs", "time_limit", "node_limit", "common_seeds", "problems", "planners"});
+      {"name", "description", "seed", "runs", "time_limit", "node_limit", "common_seeds", "cost", "problems",
+       "planners"});
   Experiment e;
   e.file = file;
   e.name = root.string("name", file.stem().string());
@@ -165,6 +187,12 @@ Experiment load_experiment(const std::filesystem::path& file) {
   if (nodes < 1) root.fail("node_limit", "expected a positive integer, got " + std::to_string(nodes));
   e.node_limit = static_cast<std::size_t>(nodes);
   e.common_seeds = root.boolean("common_seeds", false);
+  e.cost = root.string("cost", std::string(kDefaultCost));
+  try {
+    check_cost_metric(e.cost);
+  } catch (const Error& err) {
+    root.fail("cost", err.what());
+  }
 
   const world::YamlFields problems = root.child("problems");
   if (problems.size() == 0) problems.fail("", "expected at least one problem");
@@ -193,10 +221,22 @@ Experiment load_experiment(const std::filesystem::path& file) {
   const world::YamlFields planners = root.child("planners");
   if (planners.size() == 0) planners.fail("", "expected at least one planner");
   labels.clear();
+  bool tasks_checked = false;
   for (std::size_t i = 0; i < planners.size(); ++i) {
     const world::YamlFields f = planners.element(i);
     PlannerConfig c = parse_planner(f);
-    check_planner(c, e.problems, f);
+    try {
+      c.kind = method_kind(c.planner);
+    } catch (const Error& err) {
+      f.fail(f.node().IsScalar() ? "" : "planner", err.what());
+    }
+    if (c.kind == MethodKind::kPlanner) {
+      check_method(roadmap::builtin_planners(), c, e.problems, f);
+    } else {
+      check_method(nav::builtin_navigators(), c, e.problems, f);
+      if (!tasks_checked) check_nav_tasks(e.problems, f);
+      tasks_checked = true;
+    }
     if (!labels.insert(c.label).second) f.fail("", "planner name '" + c.label + "' appears twice; give each a name");
     e.planners.push_back(std::move(c));
   }

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "amp/bench/cost_metric.hpp"
 #include "amp/stats/histogram.hpp"
 #include "amp/viz/charts.hpp"
 #include "amp/viz/xml_escape.hpp"
@@ -51,12 +52,9 @@ std::string mark(bool best, const std::string& html) {
   return best ? "<span class=\"best\">" + html + "</span>" : html;
 }
 
-const Json& cost_of(const Json& planner) {
-  static const Json kEmpty = Json::object();
-  return planner.contains("cd_calls") ? planner["cd_calls"] : kEmpty;
-}
+const Json& cost_of(const Json& planner) { return text::cost_json(planner); }
 
-// Index of the planner with the smallest finite cd_calls[key], if more than one planner.
+// Index of the planner with the smallest finite cost[key], if more than one planner.
 std::optional<std::size_t> lowest(const Json& planners, const char* key) {
   std::optional<std::size_t> best;
   if (planners.size() < 2) return best;
@@ -122,8 +120,10 @@ void overview(std::ostream& out, const Experiment& e, const Json& problems) {
     out << "</section>\n";
     return;
   }
-  out << "<h2>Overview</h2><p class=\"note\">Mean run cost in CD calls, its coefficient of variation and the "
-         "share of solved runs; the lowest mean and CV of each problem are marked.</p>\n"
+  const text::CostStyle style = text::cost_style(e.cost);
+  out << "<h2>Overview</h2><p class=\"note\">Mean run cost in " << xml_escape(style.label)
+      << ", its coefficient of variation and the share of solved runs; the lowest mean and CV of each problem are "
+         "marked.</p>\n"
          "<table class=\"overview\"><thead><tr><th>Problem</th>";
   for (std::size_t c = 0; c < e.planners.size(); ++c) {
     out << "<th>" << swatch(c) << xml_escape(e.planners[c].label) << "</th>";
@@ -136,7 +136,7 @@ void overview(std::ostream& out, const Experiment& e, const Json& problems) {
         << "</a></td>";
     for (std::size_t c = 0; c < planners.size(); ++c) {
       const Json& cost = cost_of(planners[c]);
-      out << "<td>" << mark(low_mean == c, text::count(text::number_at(cost, "mean"))) << "<br><small>"
+      out << "<td>" << mark(low_mean == c, style.format(text::number_at(cost, "mean"))) << "<br><small>"
           << mark(low_cv == c, "CV " + text::percent(std::round(text::number_at(cost, "cv_percent")))) << " \u00b7 " << text::percent(std::round(text::number_at(planners[c], "solved_percent")))
           << " solved</small></td>";
     }
@@ -145,10 +145,13 @@ void overview(std::ostream& out, const Experiment& e, const Json& problems) {
   out << "</tbody></table></section>\n";
 }
 
-void cost_table(std::ostream& out, const Json& problem) {
+void cost_table(std::ostream& out, const Json& problem, const std::string& metric) {
   const Json& planners = problem.value("planners", Json::array());
   const auto low_mean = lowest(planners, "mean"), low_cv = lowest(planners, "cv_percent");
-  out << "<h3>Run cost in collision-detection calls</h3>\n<table class=\"stats\"><thead>"
+  const text::CostStyle style = text::cost_style(metric);
+  out << (metric == kDefaultCost ? std::string("<h3>Run cost in collision-detection calls</h3>")
+                                 : "<h3>Run cost: " + xml_escape(metric) + "</h3>")
+      << "\n<table class=\"stats\"><thead>"
          "<tr class=\"group\"><th colspan=\"3\"></th><th colspan=\"3\">as the paper\u2019s Table 1</th>"
          "<th colspan=\"5\">five-number summary</th><th colspan=\"3\">medians</th></tr>"
          "<tr><th>Planner</th><th>Runs</th><th>Solved</th><th>Mean</th><th>Std. dev.</th><th>CV</th>"
@@ -157,7 +160,7 @@ void cost_table(std::ostream& out, const Json& problem) {
   for (std::size_t c = 0; c < planners.size(); ++c) {
     const Json& pl = planners[c];
     const Json& cost = cost_of(pl);
-    auto cell = [&](const char* key) { return "<td>" + text::count(text::number_at(cost, key)) + "</td>"; };
+    auto cell = [&](const char* key) { return "<td>" + style.format(text::number_at(cost, key)) + "</td>"; };
     auto median_of = [&](const char* metric) {
       return text::number_at(pl.contains(metric) ? pl[metric] : Json::object(), "median");
     };
@@ -165,7 +168,7 @@ void cost_table(std::ostream& out, const Json& problem) {
     out << "<tr><td>" << swatch(c) << "<strong>" << xml_escape(pl.value("name", std::string())) << "</strong></td><td>"
         << text::count(n) << "</td><td>" << text::count(solved) << " <small>("
         << text::percent(text::number_at(pl, "solved_percent")) << ")</small></td>"
-        << "<td>" << mark(low_mean == c, text::count(text::number_at(cost, "mean"))) << "</td>" << cell("std")
+        << "<td>" << mark(low_mean == c, style.format(text::number_at(cost, "mean"))) << "</td>" << cell("std")
         << "<td>" << mark(low_cv == c, text::percent(std::round(text::number_at(cost, "cv_percent")))) << "</td>" << cell("min") << cell("q1")
         << cell("median") << cell("q3") << cell("max") << "<td>" << text::seconds(median_of("time_s")) << "</td><td>"
         << text::count(median_of("nodes")) << "</td><td>" << text::real(median_of("path_length")) << "</td></tr>\n";
@@ -190,7 +193,7 @@ void phase_table(std::ostream& out, const Json& problem) {
          "<th>Total</th><th>CV of total</th></tr></thead><tbody>\n";
   for (std::size_t c = 0; c < planners.size(); ++c) {
     const Json& pl = planners[c];
-    const Json& cost = cost_of(pl);
+    const Json& cost = pl.contains("cd_calls") ? pl["cd_calls"] : Json::object();  // CD calls whatever the cost
     const Json& nodes = pl.contains("nodes") ? pl["nodes"] : Json::object();
     out << "<tr><td>" << swatch(c) << "<strong>" << xml_escape(pl.value("name", std::string())) << "</strong></td><td>"
         << text::count(median(pl, "nodes_training")) << "</td><td>" << text::count(median(pl, "nodes_planning"))
@@ -218,8 +221,11 @@ void charts(std::ostream& out, const Experiment& e, const std::vector<std::vecto
   box.height_px = kBoxHeightPx;
   box.scale = log ? viz::AxisScale::kLog : viz::AxisScale::kLinear;
   box.title = "Run cost per planner";
-  box.value_label = "CD calls";
-  if (!log) box.lo = 0.0;  // costs are counts: a linear axis starts at zero
+  box.value_label = text::cost_style(e.cost).label;
+  const bool non_negative = std::all_of(cost.begin(), cost.end(), [](const auto& g) {
+    return std::all_of(g.begin(), g.end(), [](double v) { return v >= 0.0; });
+  });
+  if (!log && non_negative) box.lo = 0.0;  // counts and lengths: a linear axis starts at zero
   out << "<div class=\"charts\"><figure class=\"box\">" << viz::box_plot_svg(series, box)
       << "<figcaption>Box: quartiles, bar: median, \u25c7: mean, whiskers: 1.5 IQR, dots: outliers"
       << (log ? "; log scale (the costs span more than " + text::count(kLogSpan) + "\u00d7)" : std::string())

@@ -13,7 +13,8 @@
 
 namespace amp::bench::report_page {
 
-// From runs.csv: cost[problem][planner] = each run's CD calls; the first solved trial per problem.
+// From runs.csv: cost[problem][planner] = each run's cost (Experiment::cost; runs without a value of
+// it left out); the first solved trial per problem.
 struct RunData {
   std::vector<std::vector<std::vector<double>>> cost;
   std::vector<std::optional<std::size_t>> first_solved;
@@ -27,9 +28,12 @@ std::string planner_color(std::size_t i);
 
 // Planner configurations and a problems x planners matrix of mean cost, CV and solved %.
 void overview(std::ostream& out, const Experiment& e, const nlohmann::json& problems);
-// The paper's Table 1 for one problem (summary.json's entry), extended with the five-number
-// summary and median time, nodes and path length.
-void cost_table(std::ostream& out, const nlohmann::json& problem);
+// The paper's Table 1 for one problem (summary.json's entry) on the experiment's cost `metric`,
+// extended with the five-number summary and median time, nodes and path length.
+void cost_table(std::ostream& out, const nlohmann::json& problem, const std::string& metric);
+// Every other metric the methods report (summary.json's "metrics"): median and quartiles per method,
+// descriptive only. Nothing when no method reports one.
+void metrics_table(std::ostream& out, const nlohmann::json& problem);
 // Nodes and CD calls split into training and planning (medians), shown only when some planner of
 // the problem spent CD calls in a training phase.
 void phase_table(std::ostream& out, const nlohmann::json& problem);

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "amp/bench/cost_metric.hpp"
+
 #include "amp/viz/xml_escape.hpp"
 
 namespace amp::bench::report_text {
@@ -186,7 +188,20 @@ std::string real(double v) {
   return printf_string("%.4g", v);
 }
 
-std::vector<std::string> findings(const nlohmann::json& problem) {
+CostStyle cost_style(const std::string& metric) {
+  CostStyle s;
+  s.label = metric_label(metric);
+  s.is_time = metric == "wall_time_s";
+  return s;
+}
+
+const nlohmann::json& cost_json(const nlohmann::json& planner) {
+  static const nlohmann::json kEmpty = nlohmann::json::object();
+  if (planner.contains("cost")) return planner["cost"];
+  return planner.contains("cd_calls") ? planner["cd_calls"] : kEmpty;
+}
+
+std::vector<std::string> findings(const nlohmann::json& problem, const CostStyle& style) {
   std::vector<std::string> out;
   const auto& planners = problem.value("planners", nlohmann::json::array());
   // Lowest mean and lowest CV among planners where they exist.
@@ -194,10 +209,10 @@ std::vector<std::string> findings(const nlohmann::json& problem) {
   const nlohmann::json* low_cv = nullptr;
   std::vector<std::string> unsolved;
   for (const auto& p : planners) {
-    const auto& cost = p.value("cd_calls", nlohmann::json::object());
+    const auto& cost = cost_json(p);
     const double mean = number_at(cost, "mean"), cv = number_at(cost, "cv_percent");
-    if (std::isfinite(mean) && (!low_mean || mean < number_at((*low_mean)["cd_calls"], "mean"))) low_mean = &p;
-    if (std::isfinite(cv) && (!low_cv || cv < number_at((*low_cv)["cd_calls"], "cv_percent"))) low_cv = &p;
+    if (std::isfinite(mean) && (!low_mean || mean < number_at(cost_json(*low_mean), "mean"))) low_mean = &p;
+    if (std::isfinite(cv) && (!low_cv || cv < number_at(cost_json(*low_cv), "cv_percent"))) low_cv = &p;
     const double n = number_at(p, "n"), solved = number_at(p, "solved");
     if (n > 0 && solved < n) {
       std::vector<std::string> kinds;
@@ -222,10 +237,11 @@ std::vector<std::string> findings(const nlohmann::json& problem) {
   };
   if (planners.size() > 1 && low_mean != nullptr) {
     out.push_back(name_html(low_mean->value("name", std::string())) + " has the lowest mean run cost (" +
-                  count(number_at((*low_mean)["cd_calls"], "mean")) + " CD calls)" + censored(*low_mean) + ".");
+                  style.format(number_at(cost_json(*low_mean), "mean")) + " " + viz::xml_escape(style.label) +
+                  ")" + censored(*low_mean) + ".");
   }
   if (low_cv != nullptr) {
-    const std::string cv = percent(std::round(number_at((*low_cv)["cd_calls"], "cv_percent")));
+    const std::string cv = percent(std::round(number_at(cost_json(*low_cv), "cv_percent")));
     out.push_back(name_html(low_cv->value("name", std::string())) +
                   (planners.size() > 1 ? " has the lowest coefficient of variation (" + cv + ")"
                                        : " has a coefficient of variation of " + cv) +

@@ -20,11 +20,23 @@ std::string percent(double v);           // "31 %", "66.7 %", "4.2 %"
 std::string seconds(double v);           // "0.42 ms", "12.3 ms", "1.23 s"
 std::string real(double v);              // 4 significant digits: 123.4, 0.01234
 
+// How the page names and prints the experiment's cost (Experiment::cost, bench/cost_metric.hpp).
+struct CostStyle {
+  std::string label = "CD calls";  // in headings and sentences: "CD calls", or the metric's name
+  bool is_time = false;            // wall_time_s: printed as seconds, other metrics as count()
+  std::string format(double v) const { return is_time ? seconds(v) : count(v); }
+};
+CostStyle cost_style(const std::string& metric);
+
+// The cost's statistics in one planner entry of summary.json: its "cost" object when the experiment
+// names a cost other than CD calls, otherwise "cd_calls"; an empty object when neither is there.
+const nlohmann::json& cost_json(const nlohmann::json& planner);
+
 // The findings of one problem of summary.json, as HTML fragments (text escaped, planner names in
 // <strong>): lowest mean and CV, unsolved runs, then each test between planners in words, at the
 // REGWQ level alpha, e.g. "Brown–Forsythe test ...: the variances of run cost differ significantly
 // (F(2, 717) = 5.04, p = 0.0071)". A problem with one planner, or tests skipped or degenerate,
 // gets a sentence saying so.
-std::vector<std::string> findings(const nlohmann::json& problem);
+std::vector<std::string> findings(const nlohmann::json& problem, const CostStyle& cost);
 
 }  // namespace amp::bench::report_text

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "amp/bench/cost_metric.hpp"
+
 #include "amp/stats/anova.hpp"
 #include "amp/stats/descriptive.hpp"
 #include "amp/stats/histogram.hpp"
@@ -37,13 +39,27 @@ nlohmann::json test_json(const stats::TestResult& t) {
 }
 
 nlohmann::json tests_json(const Experiment& e, const std::vector<GroupMetrics>& groups, double alpha) {
+  const std::string& metric = e.cost;
+  // Tests on samples that silently lost runs would compare survivors: say which runs lack the metric.
+  std::string missing;
+  for (std::size_t c = 0; c < groups.size(); ++c) {
+    if (groups[c].cost_missing == 0) continue;
+    missing += (missing.empty() ? "" : ", ") + std::to_string(groups[c].cost_missing) + " of '" +
+               e.planners[c].label + "'";
+  }
+  if (!missing.empty()) {
+    return {{"metric", metric}, {"skipped", "metric '" + metric + "' missing in runs (" + missing + ")"}};
+  }
   stats::Groups cost;
-  for (const auto& g : groups) cost.push_back(g.cd_calls);
+  for (const auto& g : groups) cost.push_back(g.cost);
   for (const auto& g : cost) {
-    if (g.size() < 2) return {{"skipped", "every planner needs at least two runs"}};
+    if (g.size() < 2) {
+      if (metric == kDefaultCost) return {{"skipped", "every planner needs at least two runs"}};
+      return {{"metric", metric}, {"skipped", "every planner needs at least two runs with a value of '" + metric + "'"}};
+    }
   }
   nlohmann::json j;
-  j["metric"] = "cd_calls";
+  j["metric"] = metric;
   j["levene_brown_forsythe"] = test_json(stats::levene_test(cost, stats::LeveneCenter::kMedian));
   j["anova"] = test_json(stats::one_way_anova(cost).test);
   j["welch_anova"] = test_json(stats::welch_anova(cost));
@@ -82,10 +98,18 @@ void GroupMetrics::add(const Trial& t) {
   nodes_planning.push_back(planned != r.extra.end() ? planned->second : static_cast<double>(r.nodes));
   if (r.status == core::PlanStatus::kSolved) path_length.push_back(r.path_length);
   ++statuses[std::string(core::to_string(r.status))];
+  const MetricSample s = metric_sample(r, cost_metric);
+  if (s.kind == MetricSample::Kind::kValue) cost.push_back(s.value);
+  if (s.kind == MetricSample::Kind::kMissing) ++cost_missing;
+  for (const auto& [name, value] : r.extra) {
+    if (std::isfinite(value)) extras[name].push_back(value);
+  }
 }
 
 ExperimentMetrics empty_metrics(const Experiment& e) {
-  return ExperimentMetrics(e.problems.size(), std::vector<GroupMetrics>(e.planners.size()));
+  GroupMetrics g;
+  g.cost_metric = e.cost;
+  return ExperimentMetrics(e.problems.size(), std::vector<GroupMetrics>(e.planners.size(), g));
 }
 
 nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, double alpha) {
@@ -98,6 +122,7 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
                        {"common_seeds", e.common_seeds},
                        {"fingerprint", e.fingerprint},
                        {"censoring", "runs stopped at a limit enter cost statistics with the cost spent"}};
+  if (e.cost != kDefaultCost) out["experiment"]["cost"] = e.cost;  // only when set: default outputs unchanged
   out["problems"] = nlohmann::json::array();
   for (std::size_t p = 0; p < e.problems.size(); ++p) {
     nlohmann::json pj = {{"name", e.problems[p].label}, {"file", e.problems[p].file.string()}};
@@ -105,21 +130,33 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
     for (std::size_t c = 0; c < e.planners.size(); ++c) {
       const GroupMetrics& g = metrics[p][c];
       const std::size_t solved = g.statuses.count("solved") != 0 ? g.statuses.at("solved") : 0;
-      pj["planners"].push_back({{"name", e.planners[c].label},
-                                {"planner", e.planners[c].planner},
-                                {"n", g.runs()},
-                                {"solved", solved},
-                                {"solved_percent", g.runs() ? 100.0 * solved / g.runs() : 0.0},
-                                {"statuses", g.statuses},
-                                {"cd_calls", describe_json(g.cd_calls)},
-                                {"time_s", describe_json(g.time_s)},
-                                {"nodes", describe_json(g.nodes)},
-                                {"path_length", describe_json(g.path_length)},
-                                {"by_phase",
-                                 {{"cd_calls_training", describe_json(g.cd_calls_training)},
-                                  {"cd_calls_planning", describe_json(g.cd_calls_planning)},
-                                  {"nodes_training", describe_json(g.nodes_training)},
-                                  {"nodes_planning", describe_json(g.nodes_planning)}}}});
+      nlohmann::json gj = {{"name", e.planners[c].label},
+                           {"planner", e.planners[c].planner},
+                           {"n", g.runs()},
+                           {"solved", solved},
+                           {"solved_percent", g.runs() ? 100.0 * solved / g.runs() : 0.0},
+                           {"statuses", g.statuses},
+                           {"cd_calls", describe_json(g.cd_calls)},
+                           {"time_s", describe_json(g.time_s)},
+                           {"nodes", describe_json(g.nodes)},
+                           {"path_length", describe_json(g.path_length)},
+                           {"by_phase",
+                            {{"cd_calls_training", describe_json(g.cd_calls_training)},
+                             {"cd_calls_planning", describe_json(g.cd_calls_planning)},
+                             {"nodes_training", describe_json(g.nodes_training)},
+                             {"nodes_planning", describe_json(g.nodes_planning)}}}};
+      if (e.cost != kDefaultCost) {
+        gj["cost"] = describe_json(g.cost);
+        gj["cost"]["metric"] = e.cost;
+        gj["cost"]["missing"] = g.cost_missing;
+        if (solved_only_metric(e.cost)) gj["cost"]["solved_only"] = true;
+      }
+      if (!g.extras.empty()) {
+        nlohmann::json extra = nlohmann::json::object();
+        for (const auto& [name, values] : g.extras) extra[name] = describe_json(values);
+        gj["metrics"] = std::move(extra);
+      }
+      pj["planners"].push_back(std::move(gj));
     }
     if (e.planners.size() >= 2) pj["tests"] = tests_json(e, metrics[p], alpha);
     out["problems"].push_back(std::move(pj));

@@ -5,7 +5,7 @@ set -euo pipefail
 root=${1:?usage: module_arrows_test.sh SOURCE_DIR}
 declare -A allowed=(
   [core]="core" [stats]="core stats" [world]="core world" [learn]="core learn"
-  [roadmap]="core world learn roadmap" [nav]="core world nav" [viz]="core world roadmap stats viz"
+  [roadmap]="core world learn roadmap" [nav]="core world learn nav" [viz]="core world roadmap stats viz"
   [bench]="core world learn nav roadmap stats viz bench")
 bad=0
 for module in "${!allowed[@]}"; do

@@ -13,13 +13,19 @@
 
 namespace amp::bench {
 
-// One planner configuration of an experiment: a registered planner with fixed parameters, and
-// optionally parameters drawn uniformly per run from a set (the "metaplanner" of the run-cost paper).
+// Where a method of an experiment is registered: roadmap::builtin_planners() or
+// nav::builtin_navigators() (bench/method_runner.hpp tells and runs them).
+enum class MethodKind { kPlanner, kNavigator };
+
+// One method configuration of an experiment: a registered planner or navigation method with fixed
+// parameters, and optionally parameters drawn uniformly per run from a set (the "metaplanner" of the
+// run-cost paper).
 struct PlannerConfig {
   std::string label;  // unique in the experiment; names the configuration in every output
-  std::string planner;  // name in the PlannerRegistry
+  std::string planner;  // name in the PlannerRegistry or the NavigatorRegistry (see `kind`)
   core::ParamMap params;
   std::map<std::string, std::vector<core::ParamValue>> draws;
+  MethodKind kind = MethodKind::kPlanner;
 };
 
 struct ExperimentProblem {
@@ -40,6 +46,8 @@ struct Experiment {
   // that planners which spend their first random numbers alike (UAS's training roadmap under each
   // clustering method) can be compared run by run (paired tests). Off: each configuration its own.
   bool common_seeds = false;
+  // The metric the tests and the report's cost charts use (`cost:`; bench/cost_metric.hpp).
+  std::string cost = "cd_calls";
   std::vector<ExperimentProblem> problems;
   std::vector<PlannerConfig> planners;
   // Hash of everything that decides the results (not of the file's layout or comments): shards and
@@ -79,8 +87,10 @@ struct Trial {
 // The hash stored in Experiment::fingerprint; recompute it after changing runs or limits.
 std::string experiment_fingerprint(const Experiment& e);
 
-// Parses and checks an experiment file: every problem file exists and loads, every planner and
-// parameter is known and in range (by building each planner once). Throws FileError/ParameterError.
+// Parses and checks an experiment file: every problem file exists and loads, every planner or
+// navigation method and parameter is known and in range (by building each method once), every
+// problem can be taken by each navigation method, and the cost is a metric's name. Throws
+// FileError/ParameterError.
 Experiment load_experiment(const std::filesystem::path& file);
 
 }  // namespace amp::bench
