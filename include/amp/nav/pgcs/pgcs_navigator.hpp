@@ -9,7 +9,8 @@ namespace amp::nav {
 // drives `queries` random query pairs by trial and error (PgcsSession). Its record: status solved
 // when every query was, path_length the length driven over the queries, nodes and edges the
 // clusters and Delaunay edges, and in `extra` the metrics `amp explore` prints (replans, the
-// median path ratio to the grid-shortest, coverage, ...).
+// median path ratio to the grid-shortest, coverage, ...), but no timing: the run's wall_time_s
+// is its time, and every other column depends on the seed alone.
 class PgcsNavigator final : public Navigator {
  public:
   PgcsNavigator(PgcsRunSettings run, learn::PgcsSettings pgcs) : run_(run), pgcs_(pgcs) {}

@@ -1,0 +1,69 @@
+// PGCS queries (Vlassis, Papakonstantinou & Tsanakas, section 4): the modified A* on the learned
+// graph of the bundled office map after 100,000 exploration steps (up to 200 clusters), as a query
+// runs it on every replan, without the driving. Target: one query with its replans <= 1 ms.
+// BM_PgcsRoutePlan: one plan between random free points (with the portals' extra edges and
+// exemplars, as the session plans). BM_PgcsQueryPlanning: whole queries driven in the simulator,
+// reporting the planning time per query (counter plan_ms) and replans per query.
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "amp/core/rng.hpp"
+#include "amp/nav/pgcs/pgcs_session.hpp"
+#include "amp/world/problem.hpp"
+
+namespace {
+
+amp::nav::PgcsSession& explored_office() {
+  static amp::nav::PgcsSession* session = [] {
+    const amp::world::Problem p = amp::world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/office-map.yaml");
+    amp::nav::PgcsRunSettings run;
+    run.steps = 100000;
+    auto* s = new amp::nav::PgcsSession(amp::nav::make_nav_task(p), run, amp::learn::PgcsSettings{}, 1);
+    s->explore(run.steps);
+    return s;
+  }();
+  return *session;
+}
+
+void BM_PgcsRoutePlan(benchmark::State& state) {
+  amp::nav::PgcsSession& s = explored_office();
+  const auto pairs = s.draw_queries(256);
+  amp::nav::RoutePlanner planner({0.25, 0.25, 3, 1.0});
+  std::size_t i = 0, expanded = 0;
+  for (auto _ : state) {
+    const auto& [a, b] = pairs[i++ % pairs.size()];
+    const amp::nav::Route r = planner.plan(
+        s.clusters(), s.memory(), a, b, {}, 0.25, [&](int x, int y) { return s.portal(x, y) != nullptr; },
+        [&](int k) { return s.node_point(k); }, -1,
+        [&](int k, std::vector<int>& out) {
+          for (int j : s.portals().crossed(k)) {
+            if (s.portal(k, j) != nullptr) out.push_back(j);
+          }
+        });
+    expanded += r.expanded;
+    benchmark::DoNotOptimize(r.cost);
+  }
+  state.counters["clusters"] = s.clusters().size();
+  state.counters["expanded"] = benchmark::Counter(static_cast<double>(expanded), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_PgcsRoutePlan)->Unit(benchmark::kMicrosecond);
+
+void BM_PgcsQueryPlanning(benchmark::State& state) {
+  amp::nav::PgcsSession& s = explored_office();
+  const auto pairs = s.draw_queries(64);
+  double plan = 0.0, replans = 0.0;
+  std::size_t n = 0;
+  for (auto _ : state) {
+    const auto& [a, b] = pairs[n++ % pairs.size()];
+    const amp::nav::QueryRecord q = s.query(a, b);
+    plan += q.plan_time_s;
+    replans += q.replans;
+  }
+  state.counters["plan_ms"] = 1e3 * plan / static_cast<double>(n);
+  state.counters["replans"] = replans / static_cast<double>(n);
+}
+BENCHMARK(BM_PgcsQueryPlanning)->Unit(benchmark::kMillisecond)->Iterations(64);
+
+}  // namespace
