@@ -121,8 +121,8 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
                 d.steps);
   Legend legend(c);
   legend.item(kClusterColor, caption, 0.4);
-  legend.item(kLegalEdge, std::to_string(d.legal_edges.size()) + " legal edges");
-  legend.item(kIllegalEdge, std::to_string(d.illegal_edges.size()) + " illegal edges (dashed)");
+  legend.item(kLegalEdge, "legal edges: " + std::to_string(d.legal_edges.size()));
+  legend.item(kIllegalEdge, "illegal edges (dashed): " + std::to_string(d.illegal_edges.size()));
   legend.item(kStartColor, "start");
   return c.str();
 }
@@ -161,7 +161,7 @@ std::string pgcs_queries_svg(const world::Problem& problem, const PgcsDrawing& d
   legend.item(kTargetColor, "target");
   legend.item(cluster_color(0), std::to_string(solved) + " of " + std::to_string(queries.size()) +
                                     " driven to the target (unsolved: dashed)");
-  legend.item(kIllegalEdge, std::to_string(replans) + " replans (x)");
+  legend.item(kIllegalEdge, "replans (x): " + std::to_string(replans));
   return c.str();
 }
 
