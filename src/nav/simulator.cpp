@@ -40,6 +40,16 @@ Simulator::Simulator(std::shared_ptr<const WorldTimeline> timeline, std::shared_
   ranges_.assign(static_cast<std::size_t>(sensors_.count()), settings_.sensors.max_range);
 }
 
+void Simulator::place(const RobotState& s) {
+  if (!next_world().disc_free(s.position, robot_->radius())) {
+    throw ParameterError("simulator: the robot cannot be placed at (" + std::to_string(s.position.x()) + ", " +
+                         std::to_string(s.position.y()) + "): in an obstacle or outside the world");
+  }
+  state_ = s;
+  state_.velocity.setZero();
+  ranges_.assign(ranges_.size(), settings_.sensors.max_range);
+}
+
 StepResult Simulator::step(const Eigen::Vector2d& command, core::Rng& rng) {
   StepResult result;
   const std::size_t version = timeline_->version_at(steps_);

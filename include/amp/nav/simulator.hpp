@@ -52,6 +52,11 @@ class Simulator {
             SimulatorSettings settings = {});
 
   StepResult step(const Eigen::Vector2d& command, core::Rng& rng);
+  // Puts the robot at `s` (a new query's start), at rest; the clock goes on. Throws ParameterError
+  // when the disc is not free there in the world of the next step.
+  void place(const RobotState& s);
+  // The world the next step runs in.
+  const NavWorld& next_world() const { return *timeline_->at(steps_); }
 
   const RobotState& state() const { return state_; }
   // Readings of the last step (max_range everywhere before the first).
@@ -61,6 +66,7 @@ class Simulator {
   const RangeSensorRing& sensors() const { return sensors_; }
   std::size_t step_count() const { return steps_; }
   std::size_t blocked_moves() const { return blocked_; }
+  double time_step() const { return settings_.time_step; }
   double time() const { return static_cast<double>(steps_) * settings_.time_step; }
 
  private:

@@ -80,7 +80,11 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   nearest_centres(clusters, target, failed, failed_tolerance, target_links_);
   // Straight from start to target only when the target is nearer than every centre the start joins.
   const double direct2 = (target - start).squaredNorm();
-  const bool direct = start_links_.empty() || direct2 <= (points_[start_links_.front()] - start).squaredNorm();
+  const bool direct_failed = std::any_of(failed.begin(), failed.end(), [&](const FailedAttachment& f) {
+    return f.cluster == Route::kTarget && (f.point - start).squaredNorm() <= failed_tolerance * failed_tolerance;
+  });
+  const bool direct = !direct_failed && (start_links_.empty() ||
+                                         direct2 <= (points_[start_links_.front()] - start).squaredNorm());
 
   const std::size_t states = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   if (g_.size() < states) {

@@ -14,7 +14,9 @@
 #include "amp/learn/pgcs.hpp"
 #include "amp/nav/nav_task.hpp"
 #include "amp/nav/pgcs/edge_memory.hpp"
+#include "amp/nav/pgcs/edge_portals.hpp"
 #include "amp/nav/pgcs/route_planner.hpp"
+#include "amp/nav/random_walk.hpp"
 #include "amp/nav/reference_grid.hpp"
 #include "amp/nav/simulator.hpp"
 
@@ -23,8 +25,6 @@ class StopCondition;
 }
 
 namespace amp::nav {
-
-class ExplorationStrategy;
 
 // How a PGCS session explores and answers queries; lengths are in robot radii, so one setting
 // suits a Khepera in a maze and a wheelchair in an office.
@@ -44,6 +44,7 @@ struct PgcsRunSettings {
   int max_replans = 25;                      // a query gives up after this many replans
   double block_distance = 0.5;               // radii: a sensor reading ahead below this is a block
   double reference_cell = 0.0;               // m, the reference grid's cell; 0: longer side / 256
+  bool portals = true;                       // drive an edge through where the explorer crossed it (EdgePortals)
   static const core::SettingsSchema<PgcsRunSettings>& schema();
   void validate() const { schema().validate(*this); }
 };
@@ -61,7 +62,7 @@ struct CurvePoint {
 struct QueryRecord {
   Eigen::Vector2d start = Eigen::Vector2d::Zero(), target = Eigen::Vector2d::Zero();
   bool solved = false;
-  bool unsolvable = false;  // the graph, less its illegal edges, does not join them (or too many replans)
+  bool unsolvable = false;  // the graph, less its illegal edges, does not join them (no route left)
   int replans = 0;
   double length = 0.0;      // driven
   double shortest = 0.0;    // grid-shortest in the world at query time (+inf: not connected)
@@ -100,6 +101,9 @@ class PgcsSession {
   const PgcsRunSettings& settings() const { return run_; }
   const learn::Pgcs& clusters() const { return pgcs_; }
   const EdgeMemory& memory() const { return memory_; }
+  const EdgePortals& portals() const { return portals_; }
+  // The portal of the edge a-b (null when none is known or portals are off).
+  const Eigen::Vector2d* portal(int a, int b) const;
   const std::vector<CurvePoint>& curves() const { return curves_; }
   // Exploration positions, one every few steps (for drawing).
   const std::vector<Eigen::Vector2d>& exploration_trace() const { return explored_; }
@@ -108,7 +112,9 @@ class PgcsSession {
   long steps() const { return explore_steps_; }
 
  private:
-  CurvePoint sample() ;
+  CurvePoint sample();
+  // Notes births of clusters (after PGCS's insertions and deletions) and the crossing of this step.
+  void track_clusters();
   // The free cells reachable from the task's start in the current world (cached per world version).
   const std::vector<std::uint8_t>& reachable();
 
@@ -116,10 +122,15 @@ class PgcsSession {
   PgcsRunSettings run_;
   learn::Pgcs pgcs_;
   EdgeMemory memory_;
+  EdgePortals portals_;
+  std::vector<long> born_;        // by cluster id: the step it was (last) created
+  std::vector<std::uint8_t> alive_;  // by cluster id, as of the last check
+  int last_winner_ = -1;
+  Eigen::Vector2d last_position_ = Eigen::Vector2d::Zero();
   RoutePlanner planner_;
   core::Rng explore_rng_, query_rng_, drive_rng_;
   Simulator simulator_;
-  std::unique_ptr<ExplorationStrategy> strategy_;
+  RandomWalk walk_;
   ReferenceGrid reference_;  // of the base world (coverage and quantisation error)
   std::vector<std::uint8_t> base_reachable_;
   std::unique_ptr<ReferenceGrid> current_;   // of the world at the current step (queries, closed prior)
@@ -128,6 +139,13 @@ class PgcsSession {
   std::vector<CurvePoint> curves_;
   std::vector<Eigen::Vector2d> explored_;
   std::vector<FailedAttachment> failed_;
+  struct Leg {
+    Eigen::Vector2d to;
+    int from, to_node;  // the route edge this leg drives
+    bool portal;        // to its portal (then on to to_node's centre)
+  };
+  std::vector<Leg> legs_;
+  std::vector<std::uint8_t> was_alive_;
   long explore_steps_ = 0;
   bool last_blocked_ = false;
 };

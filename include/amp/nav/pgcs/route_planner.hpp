@@ -20,7 +20,7 @@ struct RouteSettings {
 };
 
 // A leg end that failed for this query: the robot, near `point`, could not drive to (or from)
-// `cluster`'s centre.
+// `cluster`'s centre; cluster Route::kTarget: straight from `point` to the target.
 struct FailedAttachment {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
   int cluster = -1;

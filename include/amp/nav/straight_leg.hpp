@@ -1,0 +1,38 @@
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace amp::core {
+class Rng;
+class StopCondition;
+}  // namespace amp::core
+
+namespace amp::nav {
+
+class Simulator;
+
+struct StraightLegSettings {
+  double block_distance = 0.0;  // a reading ahead below this (and before the end) is a block; 0: touch only
+  int stall_steps = 20;         // this many steps without progress is a block
+  double budget_factor = 3.0;   // at most this many times the unobstructed step count (+ stall_steps)
+};
+
+enum class LegEnd { kArrived, kBlocked, kStopped };
+
+struct LegResult {
+  LegEnd end = LegEnd::kArrived;
+  double travelled = 0.0;
+  std::size_t steps = 0;
+};
+
+// Drives a holonomic disc (a velocity command) straight to `to` at most at `speed` per time step,
+// and reports a block the way a robot perceives one: the simulator stopped a move (touch), a range
+// sensor pointing along the way reads an obstacle nearer than block_distance that the disc would
+// sweep before arriving, or the robot makes no progress. Positions go to `trace` when given.
+// Stops with kStopped when `stop` fires.
+LegResult drive_straight(Simulator& sim, const Eigen::Vector2d& to, double speed, const StraightLegSettings& settings,
+                         core::Rng& rng, const core::StopCondition* stop, std::vector<Eigen::Vector2d>* trace);
+
+}  // namespace amp::nav

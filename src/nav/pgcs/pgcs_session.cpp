@@ -1,0 +1,318 @@
+#include "amp/nav/pgcs/pgcs_session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/core/stop_condition.hpp"
+#include "amp/nav/free_mask.hpp"
+#include "amp/nav/holonomic_disc.hpp"
+#include "amp/nav/straight_leg.hpp"
+
+namespace amp::nav {
+
+namespace {
+
+// Seed streams of a session: exploration, query pairs, driving (sensor noise while driving).
+enum Stream : std::uint64_t { kExplore = 0, kQueries = 1, kDrive = 2 };
+// At most this many exploration positions are kept for drawing, and this many reachable cells
+// enter the quantisation error (an even stride over them).
+constexpr long kTracePoints = 4000;
+constexpr std::size_t kErrorCells = 4096;
+
+Simulator make_simulator(const NavTask& task, const PgcsRunSettings& run) {
+  const double r = task.robot_radius;
+  SimulatorSettings s;
+  s.contact_tolerance = std::min(1e-6, 1e-3 * r);
+  s.sensors.max_range = run.sensor_range * r;
+  s.sensors.noise_stddev = run.sensor_noise * r;
+  const auto robot = std::make_shared<const HolonomicDisc>(HolonomicDiscSettings{r, run.speed * r / s.time_step});
+  RobotState start;
+  start.position = task.start;
+  return Simulator(task.timeline, robot, start, s);
+}
+
+RandomWalkSettings walk_settings(const NavTask& task, const PgcsRunSettings& run) {
+  const double r = task.robot_radius;
+  // The novelty walk looks as far as a few steps of its own persistence (turn_every steps).
+  const double lookahead = run.exploration == "novelty" ? std::min(run.turn_every * run.speed, 20.0) * r : 0.0;
+  return {run.speed * r, run.turn_every, run.avoid_distance * r, lookahead};
+}
+
+}  // namespace
+
+const core::SettingsSchema<PgcsRunSettings>& PgcsRunSettings::schema() {
+  using S = PgcsRunSettings;
+  static const core::SettingsSchema<S> schema(
+      "pgcs",
+      {core::integer_field<S>("steps", &S::steps, 1, 1e10, "exploration steps"),
+       core::integer_field<S>("queries", &S::queries, 0, 1e6, "random query pairs after exploring"),
+       core::integer_field<S>("curve_points", &S::curve_points, 1, 1e5, "samples of the exploration curves"),
+       core::choice_field<S>("exploration", &S::exploration, {"random-walk", "novelty"},
+                             "random-walk (the paper) or novelty (heads for the least visited clear direction)"),
+       core::real_field<S>("speed", &S::speed, 1e-3, 1, "robot radii per time step"),
+       core::real_field<S>("turn_every", &S::turn_every, 1, 1e9, "random walk: mean steps between turns"),
+       core::real_field<S>("avoid_distance", &S::avoid_distance, 0, 100, "radii: a closer reading ahead turns the walk"),
+       core::real_field<S>("sensor_range", &S::sensor_range, 1e-3, 100, "radii beyond the rim"),
+       core::real_field<S>("sensor_noise", &S::sensor_noise, 0, 10, "radii, standard deviation of a reading"),
+       core::real_field<S>("turn_weight", &S::turn_weight, 0, 1e6, "route cost per radian turned, in radii"),
+       core::real_field<S>("prior_weight", &S::prior_weight, 0, 1e6, "route cost per log(mean prior / prior), radii"),
+       core::integer_field<S>("attach", &S::attach, 1, 64, "start and target join this many nearest centres"),
+       core::integer_field<S>("max_replans", &S::max_replans, 0, 1e6, "a query gives up after this many replans"),
+       core::real_field<S>("block_distance", &S::block_distance, 0, 100, "radii: a closer reading ahead is a block"),
+       core::real_field<S>("reference_cell", &S::reference_cell, 0, 1e9,
+                           "m, cell of the reference grid (0: longer side / 256)"),
+       core::bool_field<S>("portals", &S::portals,
+                           "drive an edge through where the explorer crossed between its clusters")});
+  return schema;
+}
+
+PgcsSession::PgcsSession(NavTask task, PgcsRunSettings run, learn::PgcsSettings pgcs, std::uint64_t seed)
+    : task_(std::move(task)),
+      run_((run.validate(), run)),
+      pgcs_(pgcs),
+      memory_(task_.robot_radius),
+      portals_(pgcs.window),
+      planner_(RouteSettings{run_.turn_weight * task_.robot_radius, run_.prior_weight * task_.robot_radius, run_.attach}),
+      explore_rng_(core::derive_seed(seed, kExplore)),
+      query_rng_(core::derive_seed(seed, kQueries)),
+      drive_rng_(core::derive_seed(seed, kDrive)),
+      simulator_(make_simulator(task_, run_)),
+      walk_(walk_settings(task_, run_),
+            [this](const Eigen::Vector2d& p) {
+              // The clusters' mixture density at p (eq. 1 weighted by the priors).
+              double sum = 0.0;
+              for (int k : pgcs_.ids()) {
+                const double s2 = pgcs_.variance(k);
+                sum += pgcs_.prior(k) * std::exp(-(p - pgcs_.mean(k)).squaredNorm() / (2 * s2)) /
+                       (2 * std::numbers::pi * s2);
+              }
+              return sum;
+            }),
+      reference_(*task_.timeline->base(), task_.robot_radius, run_.reference_cell) {
+  base_reachable_ = reference_.reachable_from(task_.start);
+  if (std::none_of(base_reachable_.begin(), base_reachable_.end(), [](std::uint8_t c) { return c != 0; })) {
+    throw ParameterError("no free cell of the reference grid is reachable from the start (the world has no room "
+                         "for the robot, or reference_cell is too coarse)");
+  }
+}
+
+PgcsSession::~PgcsSession() = default;
+
+bool PgcsSession::explore(long steps, const core::StopCondition* stop, const std::function<void(long)>& progress) {
+  const long sample_every = std::max(1L, run_.steps / run_.curve_points);
+  const long trace_every = std::max(1L, run_.steps / kTracePoints);
+  if (curves_.empty()) curves_.push_back(sample());
+  for (long i = 0; i < steps; ++i) {
+    if (stop != nullptr && (i & 255) == 0 && stop->time_up()) return false;
+    const Eigen::Vector2d command = walk_.command(simulator_, last_blocked_, explore_rng_);
+    last_blocked_ = simulator_.step(command, explore_rng_).blocked;
+    pgcs_.step(simulator_.state().position);
+    ++explore_steps_;
+    track_clusters();
+    if (explore_steps_ % trace_every == 0) explored_.push_back(simulator_.state().position);
+    if (explore_steps_ % sample_every == 0 || i + 1 == steps) {
+      if (curves_.back().step != explore_steps_) curves_.push_back(sample());
+      if (progress) progress(i + 1);
+    }
+  }
+  return true;
+}
+
+void PgcsSession::track_clusters() {
+  const long n = pgcs_.steps();
+  const learn::PgcsSettings& ps = pgcs_.settings();
+  if (n == 1 || n % ps.insert_every == 0 || n % ps.delete_every == 0) {
+    std::fill(alive_.begin(), alive_.end(), 0);
+    for (int k : pgcs_.ids()) {
+      const auto id = static_cast<std::size_t>(k);
+      if (id >= born_.size()) born_.resize(id + 1, -1), alive_.resize(id + 1, 0);
+      if (born_[id] < 0 || (!was_alive_.empty() && (id >= was_alive_.size() || !was_alive_[id]))) born_[id] = n;
+      alive_[id] = 1;
+    }
+    was_alive_ = alive_;
+  }
+  const int w = pgcs_.last_step().winner;
+  const Eigen::Vector2d& x = simulator_.state().position;
+  if (run_.portals && w >= 0 && last_winner_ >= 0 && w != last_winner_ && alive_[static_cast<std::size_t>(last_winner_)]) {
+    portals_.observe(last_winner_, born_[static_cast<std::size_t>(last_winner_)], w, born_[static_cast<std::size_t>(w)],
+                     0.5 * (x + last_position_));
+  }
+  last_winner_ = w;
+  last_position_ = x;
+}
+
+const Eigen::Vector2d* PgcsSession::portal(int a, int b) const {
+  if (!run_.portals) return nullptr;
+  const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
+  if (ua >= born_.size() || ub >= born_.size()) return nullptr;
+  return portals_.find(a, born_[ua], b, born_[ub]);
+}
+
+const std::vector<std::uint8_t>& PgcsSession::reachable() {
+  const std::size_t version = task_.timeline->version_at(simulator_.step_count());
+  if (version != current_version_) {
+    current_ = std::make_unique<ReferenceGrid>(*task_.timeline->at(simulator_.step_count()), task_.robot_radius,
+                                               reference_.mask().cell_size());
+    current_reachable_ = current_->reachable_from(task_.start);
+    current_version_ = version;
+  }
+  return current_reachable_;
+}
+
+CurvePoint PgcsSession::sample() {
+  CurvePoint c;
+  c.step = explore_steps_;
+  c.clusters = pgcs_.size();
+  c.coverage = coverage();
+  c.quantisation_error = quantisation_error();
+  // Clusters whose centre the robot could reach in the world it started in but no longer can. (A
+  // centre is a mean of positions and may itself lie where the disc does not fit, beside a wall:
+  // such a cluster is counted by where the robot can stand nearest to it, cell_near.)
+  const std::vector<std::uint8_t>& open = reachable();
+  if (current_version_ == 0) return c;
+  for (int k : pgcs_.ids()) {
+    const int cell = reference_.cell_near(pgcs_.mean(k));
+    if (cell >= 0 && base_reachable_[static_cast<std::size_t>(cell)] != 0 && open[static_cast<std::size_t>(cell)] == 0) {
+      c.closed_prior += pgcs_.prior(k);
+    }
+  }
+  return c;
+}
+
+double PgcsSession::coverage() const {
+  const FreeMask& m = reference_.mask();
+  std::vector<std::uint8_t> covered(m.cell_count(), 0);
+  for (int k : pgcs_.ids()) {
+    const double reach = 2.0 * std::sqrt(pgcs_.variance(k));
+    const Eigen::Vector2d lo = (pgcs_.mean(k) - m.origin()).array() / m.cell_size() - reach / m.cell_size();
+    const Eigen::Vector2d hi = (pgcs_.mean(k) - m.origin()).array() / m.cell_size() + reach / m.cell_size();
+    const int x0 = std::max(0, static_cast<int>(std::floor(lo.x()))), x1 = std::min(m.width() - 1, static_cast<int>(hi.x()));
+    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y()))), y1 = std::min(m.height() - 1, static_cast<int>(hi.y()));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if ((m.cell_center(x, y) - pgcs_.mean(k)).squaredNorm() <= reach * reach) covered[static_cast<std::size_t>(m.index(x, y))] = 1;
+      }
+    }
+  }
+  std::size_t open = 0, hit = 0;
+  for (std::size_t i = 0; i < covered.size(); ++i) {
+    open += base_reachable_[i];
+    hit += base_reachable_[i] & covered[i];
+  }
+  return open == 0 ? 0.0 : static_cast<double>(hit) / static_cast<double>(open);
+}
+
+double PgcsSession::quantisation_error() const {
+  if (pgcs_.size() == 0) return 0.0;
+  const FreeMask& m = reference_.mask();
+  const std::size_t open = static_cast<std::size_t>(std::count(base_reachable_.begin(), base_reachable_.end(), 1));
+  const std::size_t stride = std::max<std::size_t>(1, (open + kErrorCells - 1) / kErrorCells);
+  double sum = 0.0;
+  std::size_t n = 0, seen = 0;
+  for (std::size_t i = 0; i < base_reachable_.size(); ++i) {
+    if (base_reachable_[i] == 0 || seen++ % stride != 0) continue;
+    const Eigen::Vector2d p = m.cell_center(static_cast<int>(i));
+    sum += (pgcs_.mean(pgcs_.triangulation().nearest(p)) - p).squaredNorm();
+    ++n;
+  }
+  return std::sqrt(sum / static_cast<double>(n));
+}
+
+std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> PgcsSession::draw_queries(int count) {
+  const std::vector<std::uint8_t>& open = reachable();
+  std::vector<int> cells;
+  for (std::size_t i = 0; i < open.size(); ++i) {
+    if (open[i] != 0) cells.push_back(static_cast<int>(i));
+  }
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> out;
+  const FreeMask& m = current_->mask();
+  for (int q = 0; q < count && !cells.empty(); ++q) {
+    const int a = cells[query_rng_.uniform_index(cells.size())];
+    const int b = cells[query_rng_.uniform_index(cells.size())];
+    out.emplace_back(m.cell_center(a), m.cell_center(b));
+  }
+  return out;
+}
+
+QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector2d& target,
+                               const core::StopCondition* stop) {
+  const double r = task_.robot_radius;
+  auto check = [&](const Eigen::Vector2d& p, const char* what) {
+    if (!simulator_.next_world().disc_free(p, r)) {
+      throw ParameterError(std::string(what) + " (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
+                           "): the robot's disc is in an obstacle or outside the world");
+    }
+  };
+  check(start, "query start");
+  check(target, "query goal");
+  QueryRecord rec;
+  rec.start = start;
+  rec.target = target;
+  reachable();  // brings current_ to the world of now
+  rec.shortest = current_->shortest_length(start, target);
+  RobotState placed;
+  placed.position = start;
+  simulator_.place(placed);
+  rec.trace.push_back(start);
+  failed_.clear();
+  const StraightLegSettings leg{run_.block_distance * r, 20, 3.0};
+  const double speed = run_.speed * r;
+  for (;;) {
+    const Eigen::Vector2d from = simulator_.state().position;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Route route = planner_.plan(pgcs_, memory_, from, target, failed_, r);
+    rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (route.empty()) {
+      rec.unsolvable = true;
+      break;
+    }
+    // Waypoints: each node, preceded by its edge's portal when one is known.
+    legs_.clear();
+    for (std::size_t i = 1; i < route.points.size(); ++i) {
+      const int u = route.nodes[i - 1], v = route.nodes[i];
+      const Eigen::Vector2d* gate = u >= 0 && v >= 0 ? portal(u, v) : nullptr;
+      if (gate != nullptr) legs_.push_back({*gate, u, v, true});
+      legs_.push_back({route.points[i], u, v, false});
+    }
+    bool blocked = false, stopped = false;
+    for (const Leg& l : legs_) {
+      if (blocked || stopped) break;
+      const Eigen::Vector2d leg_start = simulator_.state().position;
+      const LegResult res = drive_straight(simulator_, l.to, speed, leg, drive_rng_, stop, &rec.trace);
+      rec.length += res.travelled;
+      if (res.end == LegEnd::kStopped) stopped = true;
+      if (res.end != LegEnd::kBlocked) continue;
+      const int u = l.from, v = l.to_node;
+      // A node is a cluster, not its centre: stopped within sigma of the centre, the robot is in it
+      // (a centre beside a wall or a door frame is often unreachable exactly).
+      if (!l.portal && v >= 0 && (simulator_.state().position - pgcs_.mean(v)).squaredNorm() <= pgcs_.variance(v)) {
+        continue;
+      }
+      blocked = true;
+      if (u >= 0 && v >= 0) {
+        memory_.mark(u, v, pgcs_.mean(u), pgcs_.mean(v));
+      } else if (v == Route::kTarget) {
+        failed_.push_back({u >= 0 ? target : leg_start, u >= 0 ? u : Route::kTarget});
+      } else {
+        failed_.push_back({leg_start, v});
+      }
+      rec.blocks.push_back(simulator_.state().position);
+    }
+    if (stopped) break;
+    if (!blocked) {
+      rec.solved = true;
+      break;
+    }
+    if (++rec.replans > run_.max_replans) break;
+  }
+  if (rec.solved && std::isfinite(rec.shortest) && rec.shortest > 0.0) rec.ratio = rec.length / rec.shortest;
+  if (rec.solved && rec.shortest == 0.0) rec.ratio = 1.0;
+  rec.illegal_edges = memory_.size();
+  return rec;
+}
+
+}  // namespace amp::nav

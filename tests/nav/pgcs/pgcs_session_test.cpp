@@ -1,0 +1,143 @@
+#include "amp/nav/pgcs/pgcs_session.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "amp/core/error.hpp"
+#include "amp/nav/polygon_nav_world.hpp"
+#include "support/bundled_problems.hpp"
+
+namespace amp::nav {
+namespace {
+
+using V = Eigen::Vector2d;
+
+PgcsRunSettings small_run(long steps, int queries) {
+  PgcsRunSettings run;
+  run.steps = steps;
+  run.queries = queries;
+  run.curve_points = 10;
+  return run;
+}
+
+learn::PgcsSettings small_pgcs() {
+  learn::PgcsSettings p;
+  p.max_clusters = 40;
+  p.insert_every = 50;
+  p.delete_every = 1000;
+  return p;
+}
+
+// Every position the robot held is free for its disc in the world of that time (the world here
+// does not change).
+void expect_free(const NavWorld& world, const std::vector<V>& trace, double r) {
+  for (const V& p : trace) ASSERT_TRUE(world.disc_free(p, r)) << p.transpose();
+}
+
+TEST(PgcsSession, ExplorationStaysFreeAndLearnsClusters) {
+  const NavTask task = make_nav_task(test::bundled_problem("office-map.yaml"));
+  PgcsSession s(task, small_run(3000, 0), small_pgcs(), 7);
+  ASSERT_TRUE(s.explore(3000));
+  EXPECT_EQ(s.steps(), 3000);
+  EXPECT_GT(s.clusters().size(), 10);
+  expect_free(*task.timeline->base(), s.exploration_trace(), task.robot_radius);
+  ASSERT_GE(s.curves().size(), 10u);
+  EXPECT_EQ(s.curves().front().step, 0);
+  EXPECT_EQ(s.curves().back().step, 3000);
+  for (const CurvePoint& c : s.curves()) {
+    EXPECT_GE(c.coverage, 0.0);
+    EXPECT_LE(c.coverage, 1.0);
+    EXPECT_GE(c.quantisation_error, 0.0);
+    EXPECT_NEAR(c.closed_prior, 0.0, 1e-12);  // nothing closes in this world
+  }
+}
+
+TEST(PgcsSession, QueriesDriveFreePathsFromStartToTarget) {
+  const NavTask task = make_nav_task(test::bundled_problem("office-map.yaml"));
+  PgcsSession s(task, small_run(4000, 6), small_pgcs(), 3);
+  s.explore(4000);
+  const auto pairs = s.draw_queries(6);
+  ASSERT_EQ(pairs.size(), 6u);
+  int solved = 0;
+  for (const auto& [a, b] : pairs) {
+    const QueryRecord q = s.query(a, b);
+    ASSERT_FALSE(q.trace.empty());
+    EXPECT_EQ(q.trace.front(), a);
+    expect_free(*task.timeline->base(), q.trace, task.robot_radius);
+    EXPECT_EQ(q.blocks.size(), static_cast<std::size_t>(q.replans));  // a replan after every block
+    double length = 0.0;
+    for (std::size_t i = 1; i < q.trace.size(); ++i) length += (q.trace[i] - q.trace[i - 1]).norm();
+    EXPECT_NEAR(q.length, length, 1e-9 * (1 + length));
+    if (q.solved) {
+      ++solved;
+      EXPECT_LT((q.trace.back() - b).norm(), 1e-9);  // it reached what it says it reached
+      EXPECT_GT(q.ratio, 0.0);
+    }
+  }
+  EXPECT_GT(solved, 0);
+}
+
+TEST(PgcsSession, SameSeedSameRun) {
+  const NavTask task = make_nav_task(test::bundled_problem("office-map.yaml"));
+  auto run = [&] {
+    PgcsSession s(task, small_run(2000, 3), small_pgcs(), 11);
+    s.explore(2000);
+    std::vector<double> out;
+    for (int k : s.clusters().ids()) out.insert(out.end(), {s.clusters().mean(k).x(), s.clusters().mean(k).y()});
+    for (const auto& [a, b] : s.draw_queries(3)) {
+      const QueryRecord q = s.query(a, b);
+      out.insert(out.end(), {q.length, static_cast<double>(q.replans), q.solved ? 1.0 : 0.0});
+    }
+    return out;
+  };
+  EXPECT_EQ(run(), run());
+}
+
+// A 2 m x 1 m room cut in two by a wall: the right half cannot be reached from the left.
+NavTask split_task() {
+  world::Shapes2d s;
+  s.polygons.push_back({{{0.98, 0.0}, {1.02, 0.0}, {1.02, 1.0}, {0.98, 1.0}}});
+  NavTask t;
+  t.name = "split";
+  t.robot_radius = 0.05;
+  t.start = V(0.5, 0.5);
+  t.goal = V(0.5, 0.5);
+  t.timeline = std::make_shared<const WorldTimeline>(
+      std::make_shared<const PolygonNavWorld>(s, Eigen::AlignedBox2d(V(0, 0), V(2, 1))), std::vector<WorldEvent>{});
+  return t;
+}
+
+TEST(PgcsSession, UnconnectedQueryIsReportedNotSolved) {
+  PgcsSession s(split_task(), small_run(2000, 0), small_pgcs(), 5);
+  s.explore(2000);
+  const QueryRecord q = s.query(V(0.5, 0.5), V(1.5, 0.5));
+  EXPECT_FALSE(q.solved);
+  EXPECT_TRUE(std::isinf(q.shortest));
+  EXPECT_LT(q.trace.back().x(), 1.0);  // never through the wall
+  // Queries drawn at random are all on the start's side.
+  for (const auto& [a, b] : s.draw_queries(20)) EXPECT_TRUE(a.x() < 1.0 && b.x() < 1.0);
+}
+
+TEST(PgcsSession, QueryPointInAnObstacleOrOutsideIsAnError) {
+  PgcsSession s(split_task(), small_run(100, 0), small_pgcs(), 5);
+  s.explore(100);
+  EXPECT_THROW(s.query(V(1.0, 0.5), V(0.5, 0.5)), ParameterError);
+  EXPECT_THROW(s.query(V(0.5, 0.5), V(2.5, 0.5)), ParameterError);
+}
+
+TEST(PgcsSession, RejectsBadSettings) {
+  PgcsRunSettings run = small_run(100, 0);
+  run.speed = 0.0;
+  EXPECT_THROW(PgcsSession(split_task(), run, small_pgcs(), 1), ParameterError);
+  learn::PgcsSettings p = small_pgcs();
+  p.max_clusters = 2;
+  EXPECT_THROW(PgcsSession(split_task(), small_run(100, 0), p, 1), ParameterError);
+  p = small_pgcs();
+  p.window = 0;
+  EXPECT_THROW(PgcsSession(split_task(), small_run(100, 0), p, 1), ParameterError);
+}
+
+}  // namespace
+}  // namespace amp::nav
