@@ -46,11 +46,12 @@ std::vector<Eigen::Vector2d> thinned(const std::vector<Eigen::Vector2d>& pts) {
   return out;
 }
 
-void draw_edges(SvgCanvas& c, const PgcsDrawing& d, double legal_opacity) {
-  c.begin_group("legal-edges", legal_opacity);
+// `opacity` < 1 keeps the graph in the background (under the driven queries).
+void draw_edges(SvgCanvas& c, const PgcsDrawing& d, double opacity) {
+  c.begin_group("legal-edges", 0.9 * opacity);
   for (const auto& [a, b] : d.legal_edges) c.line(a, b, Style{"none", kLegalEdge, 1.0});
   c.end_group();
-  c.begin_group("illegal-edges");
+  c.begin_group("illegal-edges", opacity);
   Style illegal{"none", kIllegalEdge, 1.8, 0.95};
   illegal.dash = "6 4";
   for (const auto& [a, b] : d.illegal_edges) c.line(a, b, illegal);
@@ -111,7 +112,7 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
   const double shift = (bounds.sizes().x() + gap) * c.scale();
   c.begin_shifted_group("graph-panel", shift, 0.0);
   draw_world(c, problem);
-  draw_edges(c, d, 0.9);
+  draw_edges(c, d, 1.0);
   draw_centres(c, d);
   draw_start(c, d);
   c.end_group();
