@@ -151,16 +151,19 @@ void add_explore_command(CLI::App& app, int& exit_code) {
                                                 "on the learned graph; prints the record, draws Figure 1");
   cmd->add_option("problem", o->problem, "Problem file (2-D world, disc robot; exploration starts at its start)")
       ->required();
-  o->named.emplace_back("steps", cmd->add_option("--steps", o->steps, "Exploration steps [200000]")
+  o->named.emplace_back("steps", cmd->add_option("--steps", o->steps, "Exploration steps [" + std::to_string(nav::PgcsRunSettings{}.steps) + "]")
                                      ->check(positive_integer()));
   o->named.emplace_back("max_clusters", cmd->add_option("--max-clusters", o->max_clusters,
-                                                        "No insertion beyond this many clusters (>= 3) [200]")
+                                                        "No insertion beyond this many clusters (>= 3) [" +
+                                                            std::to_string(learn::PgcsSettings{}.max_clusters) + "]")
                                             ->check(CLI::Range(3, 1000000)));
   cmd->add_option("--seed", o->seed, "Random seed (exploration and query pairs) [1]")->check(unsigned_integer());
   o->named.emplace_back("queries", cmd->add_option("--queries", o->queries,
-                                                   "Random query pairs reachable from the start [100]")
+                                                   "Random query pairs reachable from the start [" +
+                                                       std::to_string(nav::PgcsRunSettings{}.queries) + "]")
                                        ->check(CLI::Range(0, 1000000)));
   cmd->add_option("--query", o->query, "A query SX SY GX GY instead of the random ones (repeatable)")
+      ->type_name("SX SY GX GY")
       ->type_size(4)  // four numbers per --query, any number of --query
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -168,8 +171,8 @@ void add_explore_command(CLI::App& app, int& exit_code) {
                                                        "How the robot explores: random-walk or novelty [random-walk]")
                                            ->check(CLI::IsMember({"random-walk", "novelty"})));
   cmd->add_option("--param", o->params,
-                  "PGCS or run parameter name=value (repeatable), e.g. --param window=500; "
-                  "e.g. window (l), insert_every (N), delete_every (M); an unknown name lists them all");
+                  "PGCS or run parameter name=value (repeatable): window (l), insert_every (N), delete_every (M), "
+                  "...; an unknown name lists them all");
   cmd->add_option("-o,--output", o->output, "Directory for figure1.svg, curves.svg, queries.svg, record.json");
   cmd->add_flag("--json", o->json, "Print the record as one flat JSON object");
   cmd->add_flag("--force", o->force, "Overwrite existing output files");
