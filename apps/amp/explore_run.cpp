@@ -12,6 +12,7 @@
 #include "amp/stats/descriptive.hpp"
 #include "amp/viz/pgcs_figures.hpp"
 #include "amp/viz/scene_renderer.hpp"
+#include "amp/world/occupancy_grid.hpp"
 #include "cli_util.hpp"
 
 namespace amp::cli {
@@ -143,8 +144,31 @@ nlohmann::ordered_json full_record(const ExploreResult& r) {
   return j;
 }
 
-viz::PgcsDrawing drawing_of(const nav::PgcsSession& s) {
+// The obstacles that appeared during the first `steps` steps (a vanish event is not subtracted:
+// a door that closed and opened again is still drawn, as where the robot met one).
+std::vector<world::Shapes2d> appeared_by(const world::Problem& problem, const nav::WorldTimeline& timeline,
+                                         long steps) {
+  std::vector<world::Shapes2d> out;
+  const world::Outline outline = problem.environment->obstacle_outline();
+  for (const nav::WorldEvent& e : timeline.events()) {
+    if (static_cast<long>(e.step) >= steps || e.change.action != nav::ObstacleChange::Action::kAppear) continue;
+    world::Shapes2d shapes = e.change.shapes;
+    for (const nav::CellRect& r : e.change.cells) {
+      if (outline.grid == nullptr) break;  // cells only apply to maps (the loader checked)
+      Eigen::AlignedBox2d box = outline.grid->cell_box(r.x0, r.y0);
+      box.extend(outline.grid->cell_box(r.x1, r.y1));
+      shapes.polygons.push_back({{box.corner(Eigen::AlignedBox2d::BottomLeft),
+                                  box.corner(Eigen::AlignedBox2d::BottomRight),
+                                  box.corner(Eigen::AlignedBox2d::TopRight), box.corner(Eigen::AlignedBox2d::TopLeft)}});
+    }
+    out.push_back(std::move(shapes));
+  }
+  return out;
+}
+
+viz::PgcsDrawing drawing_of(const world::Problem& problem, const nav::PgcsSession& s) {
   viz::PgcsDrawing d;
+  d.appeared = appeared_by(problem, *s.task().timeline, s.steps());
   const learn::Pgcs& k = s.clusters();
   for (const int id : k.ids()) d.clusters.push_back({k.mean(id), std::sqrt(std::max(0.0, k.variance(id)))});
   for (const auto& [a, b] : k.triangulation().edges()) {
@@ -215,7 +239,7 @@ void write_explore_outputs(const world::Problem& problem, const ExploreResult& r
   std::filesystem::create_directories(dir, ec);
   if (ec) throw FileError(dir.string() + ": cannot create the directory: " + ec.message());
   const nav::PgcsSession& s = *r.session;
-  const viz::PgcsDrawing drawing = drawing_of(s);
+  const viz::PgcsDrawing drawing = drawing_of(problem, s);
   const std::string name = problem.name + " — PGCS, " + s.settings().exploration + ", seed " +
                            r.record.at("seed").dump();
   viz::write_text_file((dir / "figure1.svg").string(), viz::pgcs_figure1_svg(problem, drawing, name));

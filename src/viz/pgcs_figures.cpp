@@ -19,6 +19,7 @@ constexpr const char* kIllegalEdge = "#d62728";
 constexpr const char* kStartColor = "#1b9e77";
 constexpr const char* kTargetColor = "#d95f02";
 constexpr const char* kClusterColor = "#4e79a7";
+constexpr const char* kAppeared = "#b45309";  // obstacles that appeared while exploring
 constexpr int kMarginPx = 28;
 constexpr int kFooterPx = 44;
 constexpr double kPanelGap = 0.06;    // of the world's width, between Figure 1's two panels
@@ -30,11 +31,15 @@ Eigen::AlignedBox2d bounds_2d(const world::Problem& problem) {
   return {b.min().head<2>(), b.max().head<2>()};
 }
 
-void draw_world(SvgCanvas& c, const world::Problem& problem) {
+void draw_world(SvgCanvas& c, const world::Problem& problem, const PgcsDrawing& d) {
   c.begin_group("workspace");
   c.rect(bounds_2d(problem), Style{kWorkspaceFill, kBoundsStroke, 1.5});
   c.end_group();
   draw_obstacles(c, problem.environment->obstacle_outline());
+  if (d.appeared.empty()) return;
+  c.begin_group("appeared");
+  for (const world::Shapes2d& shapes : d.appeared) draw_shapes(c, shapes, Style{kAppeared, kAppeared, 0.8, 0.9});
+  c.end_group();
 }
 
 std::vector<Eigen::Vector2d> thinned(const std::vector<Eigen::Vector2d>& pts) {
@@ -96,7 +101,7 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
   c.text_px(kMarginPx, 19, title, 15, kText, "start", true);
 
   c.begin_group("clusters-panel");
-  draw_world(c, problem);
+  draw_world(c, problem, d);
   c.begin_group("exploration", 0.5);
   c.polyline(thinned(d.explored), Style{"none", kTrace, 0.6});
   c.end_group();
@@ -111,7 +116,7 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
 
   const double shift = (bounds.sizes().x() + gap) * c.scale();
   c.begin_shifted_group("graph-panel", shift, 0.0);
-  draw_world(c, problem);
+  draw_world(c, problem, d);
   draw_edges(c, d, 1.0);
   draw_centres(c, d);
   draw_start(c, d);
@@ -125,6 +130,7 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
   legend.item(kLegalEdge, "legal edges: " + std::to_string(d.legal_edges.size()));
   legend.item(kIllegalEdge, "illegal edges (dashed): " + std::to_string(d.illegal_edges.size()));
   legend.item(kStartColor, "start");
+  if (!d.appeared.empty()) legend.item(kAppeared, "appeared while exploring");
   return c.str();
 }
 
@@ -132,7 +138,7 @@ std::string pgcs_queries_svg(const world::Problem& problem, const PgcsDrawing& d
                              const std::vector<QueryDrawing>& queries, const std::string& title) {
   SvgCanvas c(bounds_2d(problem), 900, kMarginPx, kFooterPx);
   c.text_px(kMarginPx, 19, title, 15, kText, "start", true);
-  draw_world(c, problem);
+  draw_world(c, problem, d);
   draw_edges(c, d, 0.35);  // the graph the routes were planned on, faint
   std::size_t solved = 0, replans = 0;
   c.begin_group("queries");
@@ -160,9 +166,10 @@ std::string pgcs_queries_svg(const world::Problem& problem, const PgcsDrawing& d
   Legend legend(c);
   legend.item(kStartColor, "query start");
   legend.item(kTargetColor, "target");
-  legend.item(cluster_color(0), std::to_string(solved) + " of " + std::to_string(queries.size()) +
-                                    " driven to the target (unsolved: dashed)");
+  legend.item(cluster_color(0),
+              "solved: " + std::to_string(solved) + " of " + std::to_string(queries.size()) + " (unsolved dashed)");
   legend.item(kIllegalEdge, "replans (x): " + std::to_string(replans));
+  if (!d.appeared.empty()) legend.item(kAppeared, "appeared while exploring");
   return c.str();
 }
 

@@ -1,5 +1,6 @@
 // `amp explore` end to end on the bundled office map: the record's keys and consistency, the files
 // of -o DIR, and the same seed giving the same record.
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -58,6 +59,17 @@ TEST_F(CliErrors, ExploreOfficeRecordFilesAndSameSeed) {
   // Same seed, same record (times aside).
   const nlohmann::json again = nlohmann::json::parse(run(args).out);
   EXPECT_EQ(untimed(again), untimed(j));
+}
+
+// A wall that closes while the robot explores: drawn over the map, and the closed prior charted.
+TEST_F(CliErrors, ExploreDrawsADoorThatClosed) {
+  const RunResult r = run("explore " + data("explore_door.yaml") + " --steps 3000 --queries 1 -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(read_file(dir_ / "out" / "figure1.svg"), HasSubstr("class=\"appeared\""));
+  const nlohmann::json record = nlohmann::json::parse(read_file(dir_ / "out" / "record.json"));
+  double closed = 0.0;
+  for (const auto& c : record.at("curves")) closed = std::max(closed, c.at("closed_prior").get<double>());
+  EXPECT_EQ(read_file(dir_ / "out" / "curves.svg").find("closed prior") != std::string::npos, closed > 0.0);
 }
 
 }  // namespace

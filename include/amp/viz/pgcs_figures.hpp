@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "amp/world/problem.hpp"
+#include "amp/world/shapes2d.hpp"
 
 namespace amp::viz {
 
@@ -27,6 +28,9 @@ struct PgcsDrawing {
   std::vector<Segment2> legal_edges;    // graph edges not known to be blocked
   std::vector<Segment2> illegal_edges;  // blocked ones, at the places their ends had when found
   std::vector<Eigen::Vector2d> explored;  // the exploration's trace (thinned)
+  // Obstacles that appeared while exploring (a door that closed), drawn over the map, which shows
+  // the world as loaded.
+  std::vector<world::Shapes2d> appeared;
   Eigen::Vector2d start = Eigen::Vector2d::Zero();  // where exploration began
   double robot_radius = 0.0;
   long steps = 0;
