@@ -7,16 +7,15 @@
 #include "amp/core/error.hpp"
 #include "amp/roadmap/roadmap.hpp"
 #include "amp/viz/svg_canvas.hpp"
+#include "amp/viz/world_layer.hpp"
 #include "amp/world/occupancy_grid.hpp"
 
 namespace amp::viz {
 
 namespace {
 
-// A palette that reads on screen and in print (and for the colour-blind: blue/orange contrast).
-constexpr const char* kObstacleFill = "#3f4a5a";
-constexpr const char* kUnknownFill = "#a9b1bc";
-constexpr const char* kBoundsStroke = "#1f2933";
+// A palette that reads on screen and in print (and for the colour-blind: blue/orange contrast); the
+// world's own colours are world_layer.hpp's.
 constexpr const char* kStartColor = "#1b9e77";
 constexpr const char* kGoalColor = "#d95f02";
 constexpr const char* kPathColor = "#2563eb";
@@ -24,38 +23,6 @@ constexpr const char* kRoadmapEdge = "#c3cad3";
 constexpr const char* kRoadmapNode = "#7b8794";
 constexpr const char* kText = "#1f2933";
 constexpr int kFooterPx = 44;
-
-void draw_shapes(SvgCanvas& c, const world::Shapes2d& shapes, const Style& s) {
-  for (const auto& p : shapes.polygons) c.polygon(p.vertices, s);
-  for (const auto& ci : shapes.circles) c.circle(ci.center, ci.radius, s);
-  // Segment walls have no inside: drawn as strokes in the fill colour, two pixels wide.
-  if (!shapes.segments.empty()) {
-    Style wall = s;
-    if (wall.stroke == "none") wall.stroke = wall.fill;
-    wall.stroke_width = std::max(2.0, wall.stroke_width);
-    for (const auto& seg : shapes.segments) c.line(seg.a, seg.b, wall);
-  }
-}
-
-void draw_grid(SvgCanvas& c, const world::OccupancyGrid& g) {
-  // Merge each row's blocked cells into runs: far fewer elements than one rect per cell.
-  const Style occupied{kObstacleFill, "none", 0, 1.0};
-  const Style unknown{kUnknownFill, "none", 0, 1.0};
-  for (int y = 0; y < g.height(); ++y) {
-    int x = 0;
-    while (x < g.width()) {
-      const world::CellState s = g.state(x, y);
-      int end = x + 1;
-      while (end < g.width() && g.state(end, y) == s) ++end;
-      if (s != world::CellState::kFree) {
-        Eigen::AlignedBox2d box = g.cell_box(x, y);
-        box.extend(g.cell_box(end - 1, y));
-        c.rect(box, s == world::CellState::kOccupied ? occupied : unknown);
-      }
-      x = end;
-    }
-  }
-}
 
 // States spread evenly (by space distance) along a path, endpoints included.
 std::vector<State> spread_along(const core::Space& space, const std::vector<State>& path, int count) {
@@ -133,7 +100,7 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
   c.text_px(28, 19, title + " (" + subtitle + ")", 15, kText, "start", true);
 
   c.begin_group("workspace");
-  c.rect(bounds, Style{"#f7f8fa", kBoundsStroke, 1.5});
+  c.rect(bounds, Style{kWorkspaceFill, kBoundsStroke, 1.5});
   c.end_group();
 
   if (options.roadmap != nullptr) {
@@ -156,12 +123,7 @@ std::string render_scene(const world::Problem& problem, const SceneOptions& opti
 
   const world::Outline outline = env.obstacle_outline();
   const double obstacle_opacity = env.workspace_dimension() == 3 ? kTopViewOpacity : 1.0;
-  c.begin_group("obstacles", obstacle_opacity, outline.grid != nullptr);
-  if (outline.grid != nullptr) draw_grid(c, *outline.grid);
-  // Members are opaque with an outline of their own colour, so the seams between adjacent
-  // triangles of a mesh disappear; the group carries the opacity.
-  draw_shapes(c, outline.shapes, Style{kObstacleFill, kObstacleFill, 0.8, 1.0});
-  c.end_group();
+  draw_obstacles(c, outline, obstacle_opacity);
 
   if (options.regions != nullptr) {
     c.begin_group("regions");

@@ -26,6 +26,7 @@ void SvgCanvas::style_attrs(const Style& s) {
   if (s.stroke != "none") body_ << " stroke-width=\"" << s.stroke_width << "\"";
   if (s.opacity < 1.0) body_ << " opacity=\"" << s.opacity << "\"";
   if (s.round_joins) body_ << " stroke-linejoin=\"round\" stroke-linecap=\"round\"";
+  if (!s.dash.empty()) body_ << " stroke-dasharray=\"" << s.dash << "\"";
 }
 
 void SvgCanvas::points_element(const char* tag, const std::vector<Eigen::Vector2d>& pts, const Style& s) {
@@ -90,6 +91,10 @@ void SvgCanvas::begin_group(std::string_view id, double opacity, bool crisp) {
   if (crisp) body_ << " shape-rendering=\"crispEdges\"";
   body_ << ">\n";
 }
+void SvgCanvas::begin_shifted_group(std::string_view id, double dx_px, double dy_px) {
+  body_ << "<g class=\"" << xml_escape(id) << "\" transform=\"translate(" << dx_px << ' ' << dy_px << ")\">\n";
+}
+
 void SvgCanvas::end_group() { body_ << "</g>\n"; }
 
 std::string SvgCanvas::str() const {

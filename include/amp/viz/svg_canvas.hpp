@@ -16,6 +16,7 @@ struct Style {
   double stroke_width = 1.0;  // pixels, whatever the zoom
   double opacity = 1.0;
   bool round_joins = false;
+  std::string dash = {};  // SVG stroke-dasharray in pixels ("6 4"); empty: solid
 };
 
 // An SVG document over a world rectangle: world coordinates in (y up), pixels out (y down). Stroke
@@ -45,6 +46,9 @@ class SvgCanvas {
   // so overlapping members (mesh triangles, grid runs) show no seams or double darkening;
   // `crisp` turns off anti-aliasing inside it (pixel-aligned rasters such as occupancy grids).
   void begin_group(std::string_view name, double opacity = 1.0, bool crisp = false);
+  // A group shifted by whole pixels: the same world drawn again beside itself (side-by-side panels
+  // share one canvas and one scale).
+  void begin_shifted_group(std::string_view name, double dx_px, double dy_px);
   void end_group();
 
   std::string str() const;
