@@ -211,7 +211,14 @@ CurvePoint PgcsSession::sample() {
 double PgcsSession::coverage() const {
   const FreeMask& m = reference_.mask();
   std::vector<std::uint8_t> covered(m.cell_count(), 0);
-  for (int k : pgcs_.ids()) {
+  const std::size_t open = static_cast<std::size_t>(std::count(base_reachable_.begin(), base_reachable_.end(), 1));
+  // Widest first, stopping once every reachable cell is covered: early in an exploration a few
+  // clusters span the whole map, and stamping each of them cell by cell would dominate the run.
+  std::vector<int> order(pgcs_.ids().begin(), pgcs_.ids().end());
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return pgcs_.variance(a) > pgcs_.variance(b); });
+  std::size_t hit = 0;
+  for (int k : order) {
+    if (hit == open) break;
     const double reach = 2.0 * std::sqrt(pgcs_.variance(k));
     const Eigen::Vector2d lo = (pgcs_.mean(k) - m.origin()).array() / m.cell_size() - reach / m.cell_size();
     const Eigen::Vector2d hi = (pgcs_.mean(k) - m.origin()).array() / m.cell_size() + reach / m.cell_size();
@@ -219,14 +226,13 @@ double PgcsSession::coverage() const {
     const int y0 = std::max(0, static_cast<int>(std::floor(lo.y()))), y1 = std::min(m.height() - 1, static_cast<int>(hi.y()));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
-        if ((m.cell_center(x, y) - pgcs_.mean(k)).squaredNorm() <= reach * reach) covered[static_cast<std::size_t>(m.index(x, y))] = 1;
+        const auto cell = static_cast<std::size_t>(m.index(x, y));
+        if (covered[cell] == 0 && (m.cell_center(x, y) - pgcs_.mean(k)).squaredNorm() <= reach * reach) {
+          covered[cell] = 1;
+          hit += base_reachable_[cell];
+        }
       }
     }
-  }
-  std::size_t open = 0, hit = 0;
-  for (std::size_t i = 0; i < covered.size(); ++i) {
-    open += base_reachable_[i];
-    hit += base_reachable_[i] & covered[i];
   }
   return open == 0 ? 0.0 : static_cast<double>(hit) / static_cast<double>(open);
 }
@@ -343,7 +349,8 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
       rec.solved = true;
       break;
     }
-    if (++rec.replans > run_.max_replans) break;
+    if (rec.replans == run_.max_replans) break;  // given up: this block is not replanned
+    ++rec.replans;
   }
   if (rec.solved && std::isfinite(rec.shortest) && rec.shortest > 0.0) rec.ratio = rec.length / rec.shortest;
   if (rec.solved && rec.shortest == 0.0) rec.ratio = 1.0;

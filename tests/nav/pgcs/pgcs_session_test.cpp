@@ -80,7 +80,10 @@ TEST(PgcsSession, QueriesDriveFreePathsFromStartToTarget) {
     ASSERT_FALSE(q.trace.empty());
     EXPECT_EQ(q.trace.front(), a);
     expect_free(*task.timeline->base(), q.trace, task.robot_radius);
-    EXPECT_EQ(q.blocks.size(), static_cast<std::size_t>(q.replans));  // a replan after every block
+    // A replan after every block, but the last one of a query given up (max_replans reached).
+    const bool given_up = !q.solved && !q.unsolvable;
+    EXPECT_EQ(q.blocks.size(), static_cast<std::size_t>(q.replans) + (given_up ? 1 : 0));
+    EXPECT_LE(q.replans, 25);
     double length = 0.0;
     for (std::size_t i = 1; i < q.trace.size(); ++i) length += (q.trace[i] - q.trace[i - 1]).norm();
     EXPECT_NEAR(q.length, length, 1e-9 * (1 + length));
