@@ -20,7 +20,7 @@ RandomWalk::RandomWalk(RandomWalkSettings settings, std::function<double(const E
   }
 }
 
-void RandomWalk::turn(const Simulator& sim, core::Rng& rng) {
+void RandomWalk::turn(const Simulator& sim, core::Rng& rng, bool novelty) {
   const RangeSensorRing& ring = sim.sensors();
   const auto ranges = sim.ranges();
   clear_.clear();
@@ -33,10 +33,13 @@ void RandomWalk::turn(const Simulator& sim, core::Rng& rng) {
     heading_ = rng.uniform(-std::numbers::pi, std::numbers::pi);
     return;
   }
-  int pick = clear_[rng.uniform_index(clear_.size())];
-  if (settings_.lookahead > 0.0 && visited_) {
+  const std::size_t first = rng.uniform_index(clear_.size());
+  int pick = clear_[first];
+  if (novelty && settings_.lookahead > 0.0 && visited_) {
+    // From a random first candidate, so that ties (equally unvisited ends) fall at random.
     double least = std::numeric_limits<double>::infinity();
-    for (int i : clear_) {
+    for (std::size_t j = 0; j < clear_.size(); ++j) {
+      const int i = clear_[(first + j) % clear_.size()];
       // As far as the way is open along that direction (a range finder's reach), so that the walk
       // is drawn to open space it can get to, not to the unvisited far side of a wall.
       const Eigen::Vector2d d = ring.direction(i, heading);
@@ -64,7 +67,9 @@ Eigen::Vector2d RandomWalk::command(const Simulator& sim, bool blocked, core::Rn
   }
   if (!started_ || blocked || obstacle_ahead || rng.uniform01() * settings_.turn_every < 1.0) {
     started_ = true;
-    turn(sim, rng);
+    // After a blocked move the novelty walk turns at random too: its best direction may be the one
+    // that just failed (a sensor between two rays reads clear), and it would push there forever.
+    turn(sim, rng, !blocked);
   }
   return settings_.speed / sim.time_step() * Eigen::Vector2d(std::cos(heading_), std::sin(heading_));
 }

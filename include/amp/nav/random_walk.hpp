@@ -25,8 +25,9 @@ struct RandomWalkSettings {
 // The exploration of Vlassis et al. (a random walk), and the better strategy their section 6 asks
 // for as an option (a novelty walk). The walk keeps a heading and turns when a sensor ahead reads
 // an obstacle, when the last move was blocked, or at random (mean turn_every steps). A turn picks
-// one of the sensor directions that read clear (uniformly, or the least visited one) and a random
-// offset within half the sensor spacing. Commands are holonomic velocities.
+// one of the sensor directions that read clear (uniformly, or the least visited one, but after a
+// blocked move always at random) and a random offset within half the sensor spacing. Commands are
+// holonomic velocities.
 class RandomWalk {
  public:
   // `visited(p)`: a density of past positions at p, used by the novelty walk (may be empty then
@@ -39,7 +40,7 @@ class RandomWalk {
   double heading() const { return heading_; }
 
  private:
-  void turn(const Simulator& sim, core::Rng& rng);
+  void turn(const Simulator& sim, core::Rng& rng, bool novelty);
 
   RandomWalkSettings settings_;
   std::function<double(const Eigen::Vector2d&)> visited_;

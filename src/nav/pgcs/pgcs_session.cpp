@@ -88,14 +88,10 @@ PgcsSession::PgcsSession(NavTask task, PgcsRunSettings run, learn::PgcsSettings 
       simulator_(make_simulator(task_, run_)),
       walk_(walk_settings(task_, run_),
             [this](const Eigen::Vector2d& p) {
-              // The clusters' mixture density at p (eq. 1 weighted by the priors).
-              double sum = 0.0;
-              for (int k : pgcs_.ids()) {
-                const double s2 = pgcs_.variance(k);
-                sum += pgcs_.prior(k) * std::exp(-(p - pgcs_.mean(k)).squaredNorm() / (2 * s2)) /
-                       (2 * std::numbers::pi * s2);
-              }
-              return sum;
+              // How visited p is: minus its distance to the nearest centre. (The mixture density
+              // would underflow to 0 a few sigma out, leaving every unexplored direction tied.)
+              const int k = pgcs_.triangulation().nearest(p);
+              return k < 0 ? 0.0 : -(p - pgcs_.mean(k)).norm();
             }),
       reference_(*task_.timeline->base(), task_.robot_radius, run_.reference_cell) {
   base_reachable_ = reference_.reachable_from(task_.start);
