@@ -139,7 +139,11 @@ void PgcsSession::track_clusters() {
     }
     was_alive_ = alive_;
   }
-  const int w = pgcs_.last_step().winner;
+  // The Voronoi cell the robot stands in (its nearest centre), not the PGCS winner: the planning
+  // graph is the Delaunay graph, the dual of these cells, so a move from one cell into another is
+  // the evidence for that very edge (the winner, whose criterion weighs sigma and pi, may be a
+  // wide cluster far off, and its "crossings" would join clusters that are not neighbours).
+  const int w = pgcs_.triangulation().nearest(simulator_.state().position);
   const Eigen::Vector2d& x = simulator_.state().position;
   if (w >= 0 && static_cast<std::size_t>(w) < born_.size()) {
     const auto uw = static_cast<std::size_t>(w);
@@ -167,7 +171,7 @@ const Eigen::Vector2d* PgcsSession::portal(int a, int b) const {
 Eigen::Vector2d PgcsSession::node_point(int k) const {
   const auto u = static_cast<std::size_t>(k);
   if (!run_.exemplars) return pgcs_.mean(k);
-  // A cluster that has not won a step since it was made has no exemplar: nothing says the robot
+  // A cluster whose cell the robot has not entered since it was made has no exemplar: nothing says the robot
   // can stand in it, so routes leave it out.
   if (u >= born_.size() || exemplar_born_[u] != born_[u]) return Eigen::Vector2d::Constant(std::nan(""));
   return exemplar_[u];

@@ -7,8 +7,8 @@
 
 namespace amp::nav {
 
-// Where the exploring robot crossed from one cluster's region into a neighbour's: whenever the PGCS
-// winner changes between two steps, the midpoint of the two positions is a crossing of that pair,
+// Where the exploring robot crossed from one cluster's Voronoi cell into another's: whenever its
+// nearest centre changes between two steps, the midpoint of the two positions is a crossing of that pair,
 // and each pair keeps the running mean of its crossings (over at most `memory` of them, so that it
 // follows clusters that drift). Driving a graph edge through its portal follows where the robot
 // really went (a door) where the straight segment between the centres may clip a door frame. This

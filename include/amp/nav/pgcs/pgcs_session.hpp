@@ -106,9 +106,10 @@ class PgcsSession {
   const EdgePortals& portals() const { return portals_; }
   // The portal of the edge a-b (null when none is known or portals are off).
   const Eigen::Vector2d* portal(int a, int b) const;
-  // Where the robot drives to reach cluster k: its exemplar (the position it won nearest to its
-  // centre, a point where the robot has stood), or its centre when exemplars are off. A centre is
-  // a mean of positions and may lie inside an obstacle the cluster wraps around (a desk).
+  // Where the robot drives to reach cluster k: its exemplar (the position in k's Voronoi cell
+  // nearest to its centre, a point where the robot has stood), or its centre when exemplars are
+  // off. A centre is a mean of positions and may lie inside an obstacle the cluster wraps around
+  // (a desk). NaN for a cluster whose cell the robot has not entered since the cluster was made.
   Eigen::Vector2d node_point(int k) const;
   const std::vector<CurvePoint>& curves() const { return curves_; }
   // Exploration positions, one every few steps (for drawing).
