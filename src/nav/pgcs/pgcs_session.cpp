@@ -70,7 +70,9 @@ const core::SettingsSchema<PgcsRunSettings>& PgcsRunSettings::schema() {
        core::real_field<S>("unverified_weight", &S::unverified_weight, 0, 1e6,
                            "extra route cost per length of an edge the explorer never crossed (needs portals)"),
        core::bool_field<S>("exemplars", &S::exemplars,
-                           "drive to the visited position nearest each centre instead of the centre")});
+                           "drive to the visited position nearest each centre instead of the centre"),
+       core::bool_field<S>("shortcuts", &S::shortcuts,
+                           "between two portals, cut across the cell instead of through its point")});
   return schema;
 }
 
@@ -310,26 +312,39 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
       rec.unsolvable = true;
       break;
     }
-    // Waypoints: each node, preceded by its edge's portal when one is known.
+    // Waypoints: each node, preceded by its edge's portal when one is known. A node between two
+    // portals is skipped (the robot cuts across its cell from portal to portal) when `shortcuts`
+    // is on; if that cut is blocked, the robot goes on through the node's point instead.
     legs_.clear();
     for (std::size_t i = 1; i < route.points.size(); ++i) {
       const int u = route.nodes[i - 1], v = route.nodes[i];
       const Eigen::Vector2d* gate = u >= 0 && v >= 0 ? portal(u, v) : nullptr;
-      if (gate != nullptr) legs_.push_back({*gate, u, v, true});
-      legs_.push_back({route.points[i], u, v, false});
+      if (gate != nullptr) {
+        const bool cut = run_.shortcuts && !legs_.empty() && legs_.back().kind == Leg::kNode &&
+                         legs_.back().to_node == u && legs_.size() >= 2 && legs_[legs_.size() - 2].kind == Leg::kPortal;
+        if (cut) legs_.back().kind = Leg::kSkipped;
+        legs_.push_back({*gate, u, v, Leg::kPortal});
+      }
+      legs_.push_back({route.points[i], u, v, Leg::kNode});
     }
     bool blocked = false, stopped = false;
-    for (const Leg& l : legs_) {
-      if (blocked || stopped) break;
+    for (std::size_t li = 0; li < legs_.size() && !blocked && !stopped; ++li) {
+      const Leg l = legs_[li];
+      if (l.kind == Leg::kSkipped) continue;
       const Eigen::Vector2d leg_start = simulator_.state().position;
       const LegResult res = drive_straight(simulator_, l.to, speed, leg, drive_rng_, stop, &rec.trace);
       rec.length += res.travelled;
       if (res.end == LegEnd::kStopped) stopped = true;
       if (res.end != LegEnd::kBlocked) continue;
+      if (l.kind == Leg::kPortal && li > 0 && legs_[li - 1].kind == Leg::kSkipped) {
+        legs_[li - 1].kind = Leg::kNode;  // the cut failed: through the node's point, then on
+        li -= 2;
+        continue;
+      }
       const int u = l.from, v = l.to_node;
       // A node is a cluster, not a point: stopped within min(sigma, r) of its point, the robot is
       // in it (a point beside a wall or a door frame is often unreachable exactly).
-      if (!l.portal && v >= 0 &&
+      if (l.kind == Leg::kNode && v >= 0 &&
           (simulator_.state().position - l.to).squaredNorm() <= std::min(pgcs_.variance(v), r * r)) {
         continue;
       }

@@ -47,6 +47,7 @@ struct PgcsRunSettings {
   bool portals = true;                       // drive an edge through where the explorer crossed it (EdgePortals)
   double unverified_weight = 1.0;            // extra route cost per length of an edge never seen crossed
   bool exemplars = true;                     // drive to each cluster's exemplar, not to its centre
+  bool shortcuts = true;                     // between two portals, cut across the cell (not via its point)
   static const core::SettingsSchema<PgcsRunSettings>& schema();
   void validate() const { schema().validate(*this); }
 };
@@ -149,9 +150,10 @@ class PgcsSession {
   std::vector<Eigen::Vector2d> explored_;
   std::vector<FailedAttachment> failed_;
   struct Leg {
+    enum Kind { kNode, kPortal, kSkipped };
     Eigen::Vector2d to;
     int from, to_node;  // the route edge this leg drives
-    bool portal;        // to its portal (then on to to_node's centre)
+    Kind kind;          // to to_node's point, to the edge's portal, or a node cut across
   };
   std::vector<Leg> legs_;
   std::vector<std::uint8_t> was_alive_;
