@@ -12,12 +12,12 @@ namespace amp::learn {
 struct PgcsSettings {
   // l, replacing n in the learning rate and the prior update (forgetting). 10,000: a robot that
   // explores a static office keeps clusters where it has not been for a while (with 1,000 they
-  // drift after it; the office's queries are solved 94% against 95%, with paths 1.49 against
-  // 1.21 times the grid-shortest, problems/experiments/pgcs-sweep.yaml).
+  // drift after it: PGCS queries on the office drive paths 1.38 times the grid-shortest against
+  // 1.15 with 10,000, median replans 2 against 1; problems/experiments/pgcs-sweep.yaml).
   int window = 10000;
   // No insertion once this many clusters exist. 1,000: with 200 in the bundled 10 m office the
-  // Voronoi cells span walls and desks, and PGCS queries solve 63% of random pairs against 94%
-  // with 1,000 (problems/experiments/pgcs-sweep.yaml).
+  // Voronoi cells span walls and desks, and PGCS queries solve 64% of random pairs against 93%
+  // with 1,000 (problems/experiments/pgcs-sweep.yaml, 100,000 steps).
   int max_clusters = 1000;
   int insert_every = 100;       // N: an insertion every N steps
   int delete_every = 10000;     // M: a deletion every M steps
