@@ -6,7 +6,7 @@ namespace amp::nav {
 
 void EdgePortals::observe(int a, long born_a, int b, long born_b, const Eigen::Vector2d& crossing) {
   if (a > b) std::swap(a, b), std::swap(born_a, born_b);
-  const auto [it, fresh] = portals_.try_emplace({a, b});
+  const auto [it, fresh] = portals_.try_emplace(key(a, b));
   Portal& p = it->second;
   if (fresh) {
     if (static_cast<std::size_t>(b) >= crossed_.size()) crossed_.resize(static_cast<std::size_t>(b) + 1);
@@ -27,9 +27,19 @@ const std::vector<int>& EdgePortals::crossed(int a) const {
 
 const Eigen::Vector2d* EdgePortals::find(int a, long born_a, int b, long born_b) const {
   if (a > b) std::swap(a, b), std::swap(born_a, born_b);
-  const auto it = portals_.find({a, b});
+  const auto it = portals_.find(key(a, b));
   if (it == portals_.end() || it->second.born_a != born_a || it->second.born_b != born_b) return nullptr;
   return &it->second.mean;
+}
+
+void EdgePortals::forget(int a) {
+  if (static_cast<std::size_t>(a) >= crossed_.size()) return;
+  for (int b : crossed_[static_cast<std::size_t>(a)]) {
+    portals_.erase(a < b ? key(a, b) : key(b, a));
+    std::vector<int>& c = crossed_[static_cast<std::size_t>(b)];
+    c.erase(std::lower_bound(c.begin(), c.end(), a));
+  }
+  crossed_[static_cast<std::size_t>(a)].clear();
 }
 
 }  // namespace amp::nav

@@ -136,8 +136,14 @@ void PgcsSession::track_clusters() {
         born_.resize(id + 1, -1), alive_.resize(id + 1, 0);
         exemplar_.resize(id + 1, Eigen::Vector2d::Zero()), exemplar_born_.resize(id + 1, -1);
       }
-      if (born_[id] < 0 || (!was_alive_.empty() && (id >= was_alive_.size() || !was_alive_[id]))) born_[id] = n;
+      if (born_[id] < 0 || (!was_alive_.empty() && (id >= was_alive_.size() || !was_alive_[id]))) {
+        if (born_[id] >= 0) portals_.forget(k);  // the id is reused: its old pairs are not this cluster's
+        born_[id] = n;
+      }
       alive_[id] = 1;
+    }
+    for (std::size_t id = 0; id < was_alive_.size(); ++id) {
+      if (was_alive_[id] != 0 && alive_[id] == 0) portals_.forget(static_cast<int>(id));  // deleted
     }
     was_alive_ = alive_;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 
 #include "amp/core/error.hpp"
 #include "amp/learn/pgcs.hpp"
@@ -11,10 +12,12 @@
 namespace amp::nav {
 
 namespace {
-// Turning angle in [0, pi] between the directions a and b; 0 when either is a null vector.
-double turn_angle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  if (a.squaredNorm() == 0.0 || b.squaredNorm() == 0.0) return 0.0;
-  return std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)));
+// Turning angle in [0, pi] from heading a to heading b (radians); headings of null arcs are NaN
+// and turn nothing. Headings are taken once per arc (atan2 per relaxation dominated the search).
+double turn_angle(double a, double b) {
+  if (std::isnan(a) || std::isnan(b)) return 0.0;
+  const double d = std::abs(b - a);
+  return d > std::numbers::pi ? 2.0 * std::numbers::pi - d : d;
 }
 }  // namespace
 
@@ -52,6 +55,46 @@ void RoutePlanner::nearest_centres(const learn::Pgcs& clusters, const Eigen::Vec
   for (std::size_t i = 0; i < k; ++i) out.push_back(by[i].second);
 }
 
+double RoutePlanner::penalty(int w) {
+  double& p = penalty_[static_cast<std::size_t>(w)];
+  if (std::isnan(p)) {
+    const double pi = clusters_->prior(ids_[w]);
+    if (settings_.prior_weight == 0.0) {
+      p = 0.0;
+    } else {
+      p = pi > 0.0 ? settings_.prior_weight * std::max(0.0, log_mean_prior_ - std::log(pi))
+                   : std::numeric_limits<double>::max() / 4;  // never visited: last resort
+    }
+  }
+  return p;
+}
+
+void RoutePlanner::add_arc(int v, int w, double factor) {
+  const Eigen::Vector2d d = points_[w] - points_[v];
+  const double length = d.norm();
+  arcs_.push_back({v, w, factor * length + penalty(w), length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan("")});
+}
+
+void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, int v,
+                              const std::function<bool(int, int)>& verified,
+                              const std::function<void(int, std::vector<int>&)>& more_neighbours) {
+  arcs_begin_[v] = static_cast<int>(arcs_.size());
+  clusters.triangulation().neighbours(ids_[v], neighbours_);
+  if (more_neighbours) more_neighbours(ids_[v], neighbours_);
+  const double unverified = 1.0 + settings_.unverified_weight;
+  for (int id : neighbours_) {
+    if (static_cast<std::size_t>(id) >= local_of_.size() || local_of_[static_cast<std::size_t>(id)] < 0) continue;
+    const int w = local_of_[static_cast<std::size_t>(id)];
+    if (!std::isfinite(points_[w].x())) continue;
+    if (std::any_of(arcs_.begin() + arcs_begin_[v], arcs_.end(), [&](const Arc& a) { return a.to == w; })) continue;
+    if (memory.illegal(ids_[v], id, points_[v], points_[w])) continue;
+    const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
+    add_arc(v, w, known ? 1.0 : unverified);
+  }
+  if (links_target_[v] != 0) add_arc(v, static_cast<int>(points_.size()) - 1, 1.0);
+  arcs_end_[v] = static_cast<int>(arcs_.size());
+}
+
 Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, const Eigen::Vector2d& start,
                          const Eigen::Vector2d& target, std::span<const FailedAttachment> failed,
                          double failed_tolerance, const std::function<bool(int, int)>& verified,
@@ -65,7 +108,6 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   const int max_id = alive.empty() ? 0 : alive.back();
   local_of_.assign(static_cast<std::size_t>(max_id) + 1, -1);
   points_.resize(static_cast<std::size_t>(n));
-  penalty_.assign(static_cast<std::size_t>(n), 0.0);
   double prior_sum = 0.0;
   for (int i = 0; i < k; ++i) {
     local_of_[static_cast<std::size_t>(ids_[i])] = i;
@@ -74,14 +116,12 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   }
   points_[s] = start;
   points_[t] = target;
-  if (settings_.prior_weight > 0.0 && k > 0) {
-    const double mean_prior = prior_sum / k;
-    for (int i = 0; i < k; ++i) {
-      const double pi = clusters.prior(ids_[i]);
-      penalty_[i] = pi > 0.0 ? settings_.prior_weight * std::max(0.0, std::log(mean_prior / pi))
-                             : std::numeric_limits<double>::max() / 4;  // never visited: last resort
-    }
-  }
+  // Prior penalties are taken when a node is first reached (a log per cluster per plan cost more
+  // than the search); the start and the target have none.
+  clusters_ = &clusters;
+  log_mean_prior_ = k > 0 && prior_sum > 0.0 ? std::log(prior_sum / k) : 0.0;
+  penalty_.assign(static_cast<std::size_t>(n), std::nan(""));
+  penalty_[static_cast<std::size_t>(s)] = penalty_[static_cast<std::size_t>(t)] = 0.0;
   nearest_centres(clusters, start, failed, failed_tolerance, start_links_);
   nearest_centres(clusters, target, failed, failed_tolerance, target_links_);
   // Straight from start to target only when the target is nearer than every centre the start joins.
@@ -92,80 +132,74 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   const bool direct = !direct_failed && (start_links_.empty() ||
                                          direct2 <= (points_[start_links_.front()] - start).squaredNorm());
 
-  const std::size_t states = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  if (g_.size() < states) {
-    g_.resize(states);
-    parent_.resize(states);
-    stamp_.assign(states, 0);
-    closed_.assign(states, 0);
+  arcs_.clear();
+  arcs_begin_.assign(static_cast<std::size_t>(n), -1);
+  arcs_end_.assign(static_cast<std::size_t>(n), -1);
+  links_target_.assign(static_cast<std::size_t>(n), 0);
+  for (int v : target_links_) links_target_[v] = 1;
+  // The start's arcs: to the centres it joins (unverified but for `back`, the cluster the robot
+  // has just driven from), and straight to the target.
+  arcs_begin_[s] = 0;
+  const double unverified = 1.0 + settings_.unverified_weight;
+  for (int w : start_links_) add_arc(s, w, ids_[w] == back ? 1.0 : unverified);
+  if (back >= 0 && static_cast<std::size_t>(back) < local_of_.size() && local_of_[back] >= 0 &&
+      std::find(start_links_.begin(), start_links_.end(), local_of_[back]) == start_links_.end()) {
+    add_arc(s, local_of_[back], 1.0);
   }
-  if (++generation_ == 0) {  // wrapped: stale stamps could read as current
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    std::fill(closed_.begin(), closed_.end(), 0);
-    generation_ = 1;
-  }
-  const std::uint32_t gen = generation_;
+  if (direct) add_arc(s, t, 1.0);
+  arcs_end_[s] = static_cast<int>(arcs_.size());
+
+  // A* over arcs: an arc's g is the cost of arriving at its `to` over it, turns included.
+  g_.clear();
+  parent_.clear();
+  closed_.clear();
   heap_.clear();
   const std::greater<std::pair<double, int>> later;
   auto h = [&](int v) { return (points_[v] - target).norm(); };
-  auto relax = [&](int from_state, int u, int v, int w, double g_v, double factor = 1.0) {
-    const std::size_t st = static_cast<std::size_t>(v) * n + static_cast<std::size_t>(w);
-    double c = g_v + factor * (points_[w] - points_[v]).norm() + penalty_[w];
-    if (u != v) c += settings_.turn_weight * turn_angle(points_[v] - points_[u], points_[w] - points_[v]);
-    if (stamp_[st] == gen && c >= g_[st]) return;
-    stamp_[st] = gen;
-    g_[st] = c;
-    parent_[st] = from_state;
-    heap_.emplace_back(c + h(w), static_cast<int>(st));
+  auto relax = [&](int from_arc, int a, double c) {
+    if (c >= g_[static_cast<std::size_t>(a)]) return;
+    g_[static_cast<std::size_t>(a)] = c;
+    parent_[static_cast<std::size_t>(a)] = from_arc;
+    heap_.emplace_back(c + h(arcs_[static_cast<std::size_t>(a)].to), a);
     std::push_heap(heap_.begin(), heap_.end(), later);
   };
-  // The start state is (s, s): at the start with no incoming edge.
-  const int start_state = s * n + s;
-  stamp_[static_cast<std::size_t>(start_state)] = gen;
-  g_[static_cast<std::size_t>(start_state)] = 0.0;
-  parent_[static_cast<std::size_t>(start_state)] = -1;
-  heap_.emplace_back(h(s), start_state);
-  int goal_state = -1;
+  auto grow = [&] {  // per-arc state for arcs built since the last call
+    g_.resize(arcs_.size(), std::numeric_limits<double>::infinity());
+    parent_.resize(arcs_.size(), -1);
+    closed_.resize(arcs_.size(), 0);
+  };
+  grow();
+  for (int a = arcs_begin_[s]; a < arcs_end_[s]; ++a) relax(-1, a, arcs_[static_cast<std::size_t>(a)].cost);
+  int goal_arc = -1;
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), later);
-    const int st = heap_.back().second;
+    const int a = heap_.back().second;
     heap_.pop_back();
-    const auto ust = static_cast<std::size_t>(st);
-    if (closed_[ust] == gen) continue;
-    closed_[ust] = gen;
+    const auto ua = static_cast<std::size_t>(a);
+    if (closed_[ua] != 0) continue;
+    closed_[ua] = 1;
     ++route.expanded;
-    const int u = st / n, v = st % n;
+    const int v = arcs_[ua].to;
     if (v == t) {
-      goal_state = st;
+      goal_arc = a;
       break;
     }
-    const double gv = g_[ust];
-    if (v == s) {
-      const double unverified = 1.0 + settings_.unverified_weight;
-      for (int w : start_links_) relax(st, u, v, w, gv, ids_[w] == back ? 1.0 : unverified);
-      if (back >= 0 && static_cast<std::size_t>(back) < local_of_.size() && local_of_[back] >= 0 &&
-          std::find(start_links_.begin(), start_links_.end(), local_of_[back]) == start_links_.end()) {
-        relax(st, u, v, local_of_[back], gv);
-      }
-      if (direct) relax(st, u, v, t, gv);
-      continue;
+    if (arcs_begin_[v] < 0) {
+      build_arcs(clusters, memory, v, verified, more_neighbours);
+      grow();
     }
-    clusters.triangulation().neighbours(ids_[v], neighbours_);
-    if (more_neighbours) more_neighbours(ids_[v], neighbours_);
-    for (int id : neighbours_) {
-      if (static_cast<std::size_t>(id) >= local_of_.size() || local_of_[static_cast<std::size_t>(id)] < 0) continue;
-      const int w = local_of_[static_cast<std::size_t>(id)];
-      if (!std::isfinite(points_[w].x())) continue;
-      if (memory.illegal(ids_[v], id, points_[v], points_[w])) continue;
-      const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
-      relax(st, u, v, w, gv, known ? 1.0 : 1.0 + settings_.unverified_weight);
+    const double gv = g_[ua];
+    const double in = arcs_[ua].heading;
+    for (int b = arcs_begin_[v]; b < arcs_end_[v]; ++b) {
+      const Arc& out = arcs_[static_cast<std::size_t>(b)];
+      relax(a, b, gv + out.cost + settings_.turn_weight * turn_angle(in, out.heading));
     }
-    if (std::find(target_links_.begin(), target_links_.end(), v) != target_links_.end()) relax(st, u, v, t, gv);
   }
-  if (goal_state < 0) return route;
-  route.cost = g_[static_cast<std::size_t>(goal_state)];
+  if (goal_arc < 0) return route;
+  route.cost = g_[static_cast<std::size_t>(goal_arc)];
   scratch_.clear();
-  for (int st = goal_state; st >= 0; st = parent_[static_cast<std::size_t>(st)]) scratch_.push_back(st % n);
+  for (int a = goal_arc; a >= 0; a = parent_[static_cast<std::size_t>(a)]) scratch_.push_back(arcs_[static_cast<std::size_t>(a)].to);
+  scratch_.push_back(s);
   std::reverse(scratch_.begin(), scratch_.end());
   for (int v : scratch_) {
     route.nodes.push_back(v == s ? Route::kStart : v == t ? Route::kTarget : ids_[v]);

@@ -38,5 +38,22 @@ TEST(EdgePortals, ReusedIdDoesNotInheritAPortal) {
   EXPECT_EQ(p.crossed(0), std::vector<int>{1});
 }
 
+TEST(EdgePortals, ForgetDropsEveryPairOfACluster) {
+  EdgePortals p(100);
+  p.observe(0, 1, 1, 1, V(1, 0));
+  p.observe(1, 1, 2, 1, V(2, 0));
+  p.observe(0, 1, 2, 1, V(3, 0));
+  p.forget(1);
+  EXPECT_EQ(p.find(0, 1, 1, 1), nullptr);
+  EXPECT_EQ(p.find(1, 1, 2, 1), nullptr);
+  EXPECT_EQ(*p.find(0, 1, 2, 1), V(3, 0));
+  EXPECT_EQ(p.size(), 1u);
+  EXPECT_EQ(p.crossed(0), std::vector<int>{2});
+  EXPECT_EQ(p.crossed(2), std::vector<int>{0});
+  EXPECT_TRUE(p.crossed(1).empty());
+  p.forget(7);  // never seen: nothing to drop
+  EXPECT_EQ(p.size(), 1u);
+}
+
 }  // namespace
 }  // namespace amp::nav

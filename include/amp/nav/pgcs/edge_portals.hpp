@@ -1,6 +1,6 @@
 #pragma once
-#include <map>
-#include <utility>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -22,8 +22,12 @@ class EdgePortals {
   // The portal of the pair, or null when the robot never crossed between these two clusters.
   const Eigen::Vector2d* find(int a, long born_a, int b, long born_b) const;
   std::size_t size() const { return portals_.size(); }
-  // The clusters `a` was ever seen crossing to, ascending (some may be stale: check with find()).
+  // The clusters `a` was seen crossing to since it was last forgotten, ascending (a partner reborn
+  // under the same id may still be listed: check with find()).
   const std::vector<int>& crossed(int a) const;
+  // Drops every pair of cluster `a` (deleted, or its id about to be reused), so that the lists
+  // crossed() returns hold live pairs only and stay as short as the cell's true neighbourhood.
+  void forget(int a);
 
  private:
   struct Portal {
@@ -31,8 +35,11 @@ class EdgePortals {
     long crossings = 0;
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   };
+  static std::uint64_t key(int a, int b) {  // a < b
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  }
   long memory_;
-  std::map<std::pair<int, int>, Portal> portals_;  // (smaller id, larger id)
+  std::unordered_map<std::uint64_t, Portal> portals_;  // by key(smaller id, larger id); looked up, never iterated
   std::vector<std::vector<int>> crossed_;           // by id
 };
 

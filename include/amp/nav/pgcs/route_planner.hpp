@@ -75,17 +75,33 @@ class RoutePlanner {
   void nearest_centres(const learn::Pgcs& clusters, const Eigen::Vector2d& p, std::span<const FailedAttachment> failed,
                        double tolerance, std::vector<int>& out);
 
+  // A directed edge of this plan's graph, v -> w, with what entering w over it costs but the turn.
+  struct Arc {
+    int from = 0, to = 0;     // local indices
+    double cost = 0.0;        // length * (verified ? 1 : 1 + unverified_weight) + penalty of `to`
+    double heading = 0.0;     // direction (radians; NaN for a null arc), for the turning angle at `to`
+  };
+  // Appends v's arcs to arcs_ once per plan (illegal edges left out); the search states are arcs.
+  void build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, int v,
+                  const std::function<bool(int, int)>& verified,
+                  const std::function<void(int, std::vector<int>&)>& more_neighbours);
+  void add_arc(int v, int w, double factor);
+  double penalty(int w);  // the prior penalty of entering local node w, computed once per plan
+
   RouteSettings settings_;
   // Buffers reused across plans (no allocation once grown).
   std::vector<int> local_of_;                // cluster id -> local index
   std::vector<int> ids_;                     // local index -> cluster id
   std::vector<Eigen::Vector2d> points_;      // local index -> position (start, target last)
-  std::vector<double> penalty_;              // local index -> prior penalty
-  std::vector<double> g_;                    // state (u, v) -> best cost
-  std::vector<int> parent_;                  // state -> previous state
-  std::vector<std::uint32_t> stamp_;         // state -> plan number when g_ is valid
-  std::vector<std::uint32_t> closed_;       // state -> plan number when expanded
-  std::uint32_t generation_ = 0;
+  std::vector<double> penalty_;              // local index -> prior penalty (NaN: not computed yet)
+  const learn::Pgcs* clusters_ = nullptr;    // the clusters of the plan under way
+  double log_mean_prior_ = 0.0;
+  std::vector<int> arcs_begin_, arcs_end_;   // local index -> its arcs in arcs_ (begin -1: not built)
+  std::vector<std::uint8_t> links_target_;   // local index -> joins the target
+  std::vector<Arc> arcs_;
+  std::vector<double> g_;                    // arc -> best cost of arriving over it
+  std::vector<int> parent_;                  // arc -> the arc before it (-1: from the start)
+  std::vector<std::uint8_t> closed_;         // arc -> expanded
   std::vector<std::pair<double, int>> heap_;
   std::vector<int> start_links_, target_links_, neighbours_, scratch_;
   std::vector<std::pair<double, int>> by_distance_;
