@@ -22,6 +22,7 @@ const core::SettingsSchema<PgcsSettings>& PgcsSettings::schema() {
   static const core::SettingsSchema<S> schema(
       "pgcs",
       {core::integer_field<S>("window", &S::window, 1, 1e9, "l: learning rate p/(l pi) and prior step 1/l"),
+       core::bool_field<S>("warm_up", &S::warm_up, "use n instead of l while fewer than l samples have come"),
        core::integer_field<S>("max_clusters", &S::max_clusters, 3, 1e6, "no insertion beyond this many clusters"),
        core::integer_field<S>("insert_every", &S::insert_every, 1, 1e9, "N: steps between insertions"),
        core::integer_field<S>("delete_every", &S::delete_every, 1, 1e9, "M: steps between deletions"),
@@ -152,7 +153,9 @@ void Pgcs::step(const Eigen::Vector2d& xi) {
 }
 
 void Pgcs::adapt(const Eigen::Vector2d& xi) {
-  const double l = settings_.window;
+  // l, or n while fewer than l samples have come (the l most recent samples are then all n of them:
+  // the paper's stochastic approximation until the window fills).
+  const double l = settings_.warm_up ? static_cast<double>(std::min<long>(steps_, settings_.window)) : settings_.window;
   const int w = winner(xi);
   const double c_min = criterion(w, xi);
   // Eq. (2)'s terms relative to the winner's: exp(-(c_j - c_min) / 2) <= 1, the winner's = 1.

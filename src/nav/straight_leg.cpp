@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "amp/core/stop_condition.hpp"
 #include "amp/nav/simulator.hpp"
@@ -31,14 +32,21 @@ bool sensed_block(const Simulator& sim, const Eigen::Vector2d& dir, double remai
 
 LegResult drive_straight(Simulator& sim, const Eigen::Vector2d& to, double speed, const StraightLegSettings& settings,
                          core::Rng& rng, const core::StopCondition* stop, std::vector<Eigen::Vector2d>* trace) {
+  constexpr int kTurns = 4;                                 // directions tried each side of the line
+  constexpr double kTurn = 20.0 * std::numbers::pi / 180.0;  // between them
   LegResult out;
   const double length = (to - sim.state().position).norm();
   const double scale = std::max(1.0, to.cwiseAbs().maxCoeff());
   const double arrive = 1e-9 * scale;
   const auto budget = static_cast<std::size_t>(std::ceil(settings.budget_factor * length / speed)) +
                       static_cast<std::size_t>(settings.stall_steps);
+  const int candidates = settings.detour > 0.0 ? 1 + 2 * kTurns : 1;
   double best = length;  // closest distance to `to` so far
   int stalled = 0;
+  double detoured = 0.0;
+  int side = 1;                 // the side tried first: the one last turned to
+  unsigned refused = 0;         // candidates the simulator stopped at `refused_at`
+  Eigen::Vector2d refused_at = sim.state().position;
   const double step_time = sim.time_step();
   for (;;) {
     const Eigen::Vector2d gap = to - sim.state().position;
@@ -52,20 +60,44 @@ LegResult drive_straight(Simulator& sim, const Eigen::Vector2d& to, double speed
       out.end = LegEnd::kStopped;
       return out;
     }
+    if ((sim.state().position - refused_at).squaredNorm() > arrive * arrive) refused = 0;
     const Eigen::Vector2d dir = gap / remaining;
-    if (sensed_block(sim, dir, remaining, settings.block_distance)) {
+    int chosen = -1;
+    double angle = 0.0;
+    Eigen::Vector2d heading = dir;
+    for (int c = 0; c < candidates && chosen < 0; ++c) {
+      if ((refused >> c) & 1U) continue;
+      angle = c == 0 ? 0.0 : side * ((c + 1) / 2) * kTurn * (c % 2 == 1 ? 1.0 : -1.0);
+      heading = Eigen::Vector2d(std::cos(angle) * dir.x() - std::sin(angle) * dir.y(),
+                                std::sin(angle) * dir.x() + std::cos(angle) * dir.y());
+      if (!sensed_block(sim, heading, remaining, settings.block_distance)) chosen = c;
+    }
+    if (chosen < 0) {
       out.end = LegEnd::kBlocked;
       return out;
     }
     // A velocity that covers the rest exactly when it is shorter than one step at full speed.
-    const Eigen::Vector2d command = dir * (std::min(speed, remaining) / step_time);
+    const Eigen::Vector2d command = heading * (std::min(speed, remaining) / step_time);
     const StepResult r = sim.step(command, rng);
     ++out.steps;
     out.travelled += r.travelled;
     if (trace != nullptr) trace->push_back(sim.state().position);
     if (r.blocked) {
-      out.end = LegEnd::kBlocked;
-      return out;
+      if (candidates == 1) {
+        out.end = LegEnd::kBlocked;
+        return out;
+      }
+      if ((sim.state().position - refused_at).squaredNorm() > arrive * arrive) refused = 0;
+      refused |= 1U << chosen;
+      refused_at = sim.state().position;
+    }
+    if (chosen != 0) {
+      side = angle > 0.0 ? 1 : -1;
+      detoured += r.travelled;
+      if (detoured > settings.detour) {
+        out.end = LegEnd::kBlocked;
+        return out;
+      }
     }
     const double now = (to - sim.state().position).norm();
     if (now < best - 1e-12 * scale) {

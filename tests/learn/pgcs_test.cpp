@@ -19,9 +19,30 @@ constexpr double kTol = 1e-12;
 PgcsSettings still(int window) {
   PgcsSettings s;
   s.window = window;
+  s.warm_up = false;  // the hand computations below use l from the first step
   s.insert_every = 1000000000;
   s.delete_every = 1000000000;
   return s;
+}
+
+TEST(Pgcs, WarmUpMakesTheCentreTheRunningMeanUntilTheWindowFills) {
+  PgcsSettings s = still(4);
+  s.warm_up = true;
+  Pgcs p(s);
+  // One cluster: p(k|xi) = pi = 1, so eta = 1/min(n, l): 1/2, 1/3, 1/4, then 1/4 (l = 4).
+  const Eigen::Vector2d xs[] = {{0, 0}, {2, 0}, {4, 3}, {6, 1}, {10, 4}};
+  p.step(xs[0]);
+  p.step(xs[1]);
+  EXPECT_NEAR(p.mean(p.ids()[0]).x(), 1.0, kTol);  // (0 + 2) / 2
+  p.step(xs[2]);
+  EXPECT_NEAR(p.mean(p.ids()[0]).x(), 2.0, kTol);  // (0 + 2 + 4) / 3
+  EXPECT_NEAR(p.mean(p.ids()[0]).y(), 1.0, kTol);
+  p.step(xs[3]);
+  EXPECT_NEAR(p.mean(p.ids()[0]).x(), 3.0, kTol);  // (0 + 2 + 4 + 6) / 4
+  EXPECT_NEAR(p.mean(p.ids()[0]).y(), 1.0, kTol);
+  p.step(xs[4]);
+  EXPECT_NEAR(p.mean(p.ids()[0]).x(), 3.0 + (10.0 - 3.0) / 4, kTol);  // the window is full: eta = 1/4
+  EXPECT_NEAR(p.mean(p.ids()[0]).y(), 1.0 + (4.0 - 1.0) / 4, kTol);
 }
 
 TEST(Pgcs, FirstSampleInitialises) {

@@ -66,5 +66,37 @@ TEST(StraightLeg, WallBesideTheWayIsNoBlock) {
   EXPECT_EQ(r.end, LegEnd::kArrived);
 }
 
+TEST(StraightLeg, DetourSlidesPastACornerTheLineGrazes) {
+  // From (0.5, 0.62) to (1.5, 0.82) the line crosses x = 1 at y = 0.72: the disc (r 0.05) would
+  // clip the wall's top corner at (1, 0.7).
+  const V from(0.5, 0.62), to(1.5, 0.82);
+  {
+    Simulator sim = make_sim(from);
+    core::Rng rng(1);
+    EXPECT_EQ(drive_straight(sim, to, 0.02, {0.025, 20, 3.0}, rng, nullptr, nullptr).end, LegEnd::kBlocked);
+  }
+  Simulator sim = make_sim(from);
+  core::Rng rng(1);
+  std::vector<V> trace;
+  const LegResult r = drive_straight(sim, to, 0.02, {0.025, 20, 3.0, 0.3}, rng, nullptr, &trace);
+  EXPECT_EQ(r.end, LegEnd::kArrived);
+  EXPECT_EQ(sim.state().position, to);
+  for (const V& p : trace) EXPECT_TRUE(sim.world().disc_free(p, 0.05));
+  EXPECT_GT(r.travelled, (to - from).norm());  // the slide is driven, not skipped
+}
+
+TEST(StraightLeg, DetourAllowanceStillStopsAtAWall) {
+  // Straight at the wall, whose top is 0.4 above the line: sliding 0.1 along it does not get round.
+  Simulator sim = make_sim(V(0.5, 0.3));
+  core::Rng rng(1);
+  std::vector<V> trace;
+  const LegResult r = drive_straight(sim, V(1.5, 0.3), 0.02, {0.025, 20, 3.0, 0.1}, rng, nullptr, &trace);
+  EXPECT_EQ(r.end, LegEnd::kBlocked);
+  EXPECT_LT(sim.state().position.x(), 0.93 + 1e-9);
+  // Off the line by at most the allowance (and one step's turn beyond it).
+  EXPECT_LT(std::abs(sim.state().position.y() - 0.3), 0.1 + 0.02);
+  for (const V& p : trace) EXPECT_TRUE(sim.world().disc_free(p, 0.05));
+}
+
 }  // namespace
 }  // namespace amp::nav

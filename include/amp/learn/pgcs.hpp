@@ -15,6 +15,11 @@ struct PgcsSettings {
   // drift after it: PGCS queries on the office drive paths 1.38 times the grid-shortest against
   // 1.15 with 10,000, median replans 2 against 1; problems/experiments/pgcs-sweep.yaml).
   int window = 10000;
+  // While n < l, use n for l: the l most recent samples are all n there are. Without it, l = 50,000
+  // gives the first cluster a learning rate of 1/50,000: the early clusters stay frozen where the
+  // robot started (a chain of small clusters along its first path on the MovingAI rooms map) and the
+  // rest of that room gets none.
+  bool warm_up = true;
   // No insertion once this many clusters exist. 1,000: with 200 in the bundled 10 m office the
   // Voronoi cells span walls and desks, and PGCS queries solve 64% of random pairs against 93%
   // with 1,000 (problems/experiments/pgcs-sweep.yaml, 100,000 steps).

@@ -17,6 +17,9 @@ struct StraightLegSettings {
   double block_distance = 0.0;  // a reading ahead below this (and before the end) is a block; 0: touch only
   int stall_steps = 20;         // this many steps without progress is a block
   double budget_factor = 3.0;   // at most this many times the unobstructed step count (+ stall_steps)
+  // Distance the robot may travel off the straight line, sliding past what blocks it; 0: none (a
+  // block ends the leg at once).
+  double detour = 0.0;
 };
 
 enum class LegEnd { kArrived, kBlocked, kStopped };
@@ -32,6 +35,11 @@ struct LegResult {
 // sensor pointing along the way reads an obstacle nearer than block_distance that the disc would
 // sweep before arriving, or the robot makes no progress. Positions go to `trace` when given.
 // Stops with kStopped when `stop` fires.
+// With a detour allowance the robot, instead of stopping at a block, steps in the nearest direction
+// (20 degrees at a time, up to 80, on the side it last turned to first) that no sensor sees blocked
+// and that the simulator lets it move; it must still get nearer the end (stall_steps), and the leg is
+// blocked once the steps off the line add up to more than the allowance. A leg that grazes a door
+// frame slides past it; a wall between the ends still blocks.
 LegResult drive_straight(Simulator& sim, const Eigen::Vector2d& to, double speed, const StraightLegSettings& settings,
                          core::Rng& rng, const core::StopCondition* stop, std::vector<Eigen::Vector2d>* trace);
 

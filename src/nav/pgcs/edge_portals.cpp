@@ -42,4 +42,13 @@ void EdgePortals::forget(int a) {
   crossed_[static_cast<std::size_t>(a)].clear();
 }
 
+void EdgePortals::drop(int a, int b) {
+  if (a > b) std::swap(a, b);
+  if (portals_.erase(key(a, b)) == 0) return;
+  for (auto [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+    std::vector<int>& c = crossed_[static_cast<std::size_t>(x)];
+    c.erase(std::lower_bound(c.begin(), c.end(), y));
+  }
+}
+
 }  // namespace amp::nav

@@ -65,6 +65,9 @@ const core::SettingsSchema<PgcsRunSettings>& PgcsRunSettings::schema() {
        core::real_field<S>("block_distance", &S::block_distance, 0, 100, "radii: a closer reading ahead is a block"),
        core::real_field<S>("reference_cell", &S::reference_cell, 0, 1e9,
                            "m, cell of the reference grid (0: longer side / 256)"),
+       core::real_field<S>("detour", &S::detour, 0, 1e6,
+                           "radii a leg may slide off its line past what blocks it (0: stop at the first block)"),
+       core::bool_field<S>("retreat", &S::retreat, "after a block, drive back the way the leg came before replanning"),
        core::bool_field<S>("portals", &S::portals,
                            "drive an edge through where the explorer crossed between its clusters"),
        core::real_field<S>("unverified_weight", &S::unverified_weight, 0, 1e6,
@@ -277,6 +280,22 @@ std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> PgcsSession::draw_queri
   return out;
 }
 
+bool PgcsSession::retreat(std::size_t from, QueryRecord& rec, const core::StopCondition* stop) {
+  // Back through the positions the leg passed (each one step from the next: the way is known free),
+  // to where the leg began, so that the robot replans from a place its route reached and the failed
+  // attachments made there hold. Stops early if a step of the way back is blocked (sensor noise).
+  const StraightLegSettings back_leg{0.0, 20, 3.0, 0.0};
+  const double speed = run_.speed * task_.robot_radius;
+  path_back_.assign(rec.trace.begin() + static_cast<std::ptrdiff_t>(from) - 1, rec.trace.end() - 1);
+  for (auto it = path_back_.rbegin(); it != path_back_.rend(); ++it) {
+    const LegResult res = drive_straight(simulator_, *it, speed, back_leg, drive_rng_, stop, &rec.trace);
+    rec.length += res.travelled;
+    if (res.end == LegEnd::kStopped) return false;
+    if (res.end == LegEnd::kBlocked) break;
+  }
+  return true;
+}
+
 QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector2d& target,
                                const core::StopCondition* stop) {
   const double r = task_.robot_radius;
@@ -298,8 +317,9 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
   simulator_.place(placed);
   rec.trace.push_back(start);
   failed_.clear();
+  blocked_now_.clear();
   int back = -1;  // the cluster the robot last drove from
-  const StraightLegSettings leg{run_.block_distance * r, 20, 3.0};
+  const StraightLegSettings leg{run_.block_distance * r, 20, 3.0, run_.detour * r};
   const double speed = run_.speed * r;
   for (;;) {
     const Eigen::Vector2d from = simulator_.state().position;
@@ -312,7 +332,8 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
                                         for (int j : portals_.crossed(k)) {
                                           if (portal(k, j) != nullptr) out.push_back(j);
                                         }
-                                      });
+                                      },
+                                      &blocked_now_);
     rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (route.empty()) {
       rec.unsolvable = true;
@@ -338,6 +359,7 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
       const Leg l = legs_[li];
       if (l.kind == Leg::kSkipped) continue;
       const Eigen::Vector2d leg_start = simulator_.state().position;
+      const std::size_t leg_trace = rec.trace.size();
       const LegResult res = drive_straight(simulator_, l.to, speed, leg, drive_rng_, stop, &rec.trace);
       rec.length += res.travelled;
       if (res.end == LegEnd::kStopped) stopped = true;
@@ -357,13 +379,22 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
       blocked = true;
       back = u >= 0 ? u : -1;
       if (u >= 0 && v >= 0) {
-        memory_.mark(u, v, node_point(u), node_point(v));
+        // An edge the explorer crossed joins free cells: a block on it says the way through its
+        // portal is undrivable (a door frame clipped), not that the edge is illegal. It loses its
+        // portal and is left out of this query; as a plain edge it may be tried again later.
+        if (portal(u, v) != nullptr) {
+          portals_.drop(u, v);
+          blocked_now_.mark(u, v, node_point(u), node_point(v));
+        } else {
+          memory_.mark(u, v, node_point(u), node_point(v));
+        }
       } else if (v == Route::kTarget) {
         failed_.push_back({u >= 0 ? target : leg_start, u >= 0 ? u : Route::kTarget});
       } else {
         failed_.push_back({leg_start, v});
       }
       rec.blocks.push_back(simulator_.state().position);
+      if (run_.retreat && !retreat(leg_trace, rec, stop)) stopped = true;
     }
     if (stopped) break;
     if (!blocked) {

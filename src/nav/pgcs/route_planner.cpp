@@ -75,7 +75,7 @@ void RoutePlanner::add_arc(int v, int w, double factor) {
   arcs_.push_back({v, w, factor * length + penalty(w), length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan("")});
 }
 
-void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, int v,
+void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, const EdgeMemory* blocked_now, int v,
                               const std::function<bool(int, int)>& verified,
                               const std::function<void(int, std::vector<int>&)>& more_neighbours) {
   arcs_begin_[v] = static_cast<int>(arcs_.size());
@@ -88,6 +88,7 @@ void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& mem
     if (!std::isfinite(points_[w].x())) continue;
     if (std::any_of(arcs_.begin() + arcs_begin_[v], arcs_.end(), [&](const Arc& a) { return a.to == w; })) continue;
     if (memory.illegal(ids_[v], id, points_[v], points_[w])) continue;
+    if (blocked_now != nullptr && blocked_now->illegal(ids_[v], id, points_[v], points_[w])) continue;
     const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
     add_arc(v, w, known ? 1.0 : unverified);
   }
@@ -99,7 +100,8 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
                          const Eigen::Vector2d& target, std::span<const FailedAttachment> failed,
                          double failed_tolerance, const std::function<bool(int, int)>& verified,
                          const std::function<Eigen::Vector2d(int)>& where, int back,
-                         const std::function<void(int, std::vector<int>&)>& more_neighbours) {
+                         const std::function<void(int, std::vector<int>&)>& more_neighbours,
+                         const EdgeMemory* blocked_now) {
   Route route;
   const std::vector<int>& alive = clusters.ids();
   const int k = static_cast<int>(alive.size());
@@ -185,7 +187,7 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
       break;
     }
     if (arcs_begin_[v] < 0) {
-      build_arcs(clusters, memory, v, verified, more_neighbours);
+      build_arcs(clusters, memory, blocked_now, v, verified, more_neighbours);
       grow();
     }
     const double gv = g_[ua];

@@ -55,5 +55,18 @@ TEST(EdgePortals, ForgetDropsEveryPairOfACluster) {
   EXPECT_EQ(p.size(), 1u);
 }
 
+TEST(EdgePortals, DropRemovesOnePair) {
+  EdgePortals p(100);
+  p.observe(0, 1, 1, 1, V(1, 0));
+  p.observe(0, 1, 2, 1, V(3, 0));
+  p.drop(1, 0);
+  EXPECT_EQ(p.find(0, 1, 1, 1), nullptr);
+  EXPECT_EQ(*p.find(0, 1, 2, 1), V(3, 0));
+  EXPECT_EQ(p.crossed(0), std::vector<int>{2});
+  EXPECT_TRUE(p.crossed(1).empty());
+  p.drop(0, 1);  // already gone
+  EXPECT_EQ(p.size(), 1u);
+}
+
 }  // namespace
 }  // namespace amp::nav

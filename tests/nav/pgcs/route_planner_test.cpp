@@ -66,6 +66,19 @@ TEST(RoutePlanner, IllegalEdgeIsAvoidedAndTurnsAreCharged) {
   EXPECT_NEAR(r.cost, 1.0 + 2 * std::sqrt(2.0) + kPi, 1e-12);
 }
 
+TEST(RoutePlanner, EdgeBlockedForThisPlanIsLeftOutLikeAnIllegalOne) {
+  Diamond w;
+  const EdgeMemory remembered(0.01);
+  EdgeMemory now(0.0);
+  now.mark(w.a, w.b, w.g.mean(w.a), w.g.mean(w.b));
+  RoutePlanner p({1.0, 0.0, 1});
+  const Route r = p.plan(w.g, remembered, kStart, kTarget, {}, 0.01, {}, {}, -1, {}, &now);
+  EXPECT_EQ(clusters_of(r), (std::vector<int>{w.a, w.d, w.c}));
+  now.clear();
+  EXPECT_EQ(clusters_of(p.plan(w.g, remembered, kStart, kTarget, {}, 0.01, {}, {}, -1, {}, &now)),
+            (std::vector<int>{w.a, w.b, w.c}));
+}
+
 TEST(RoutePlanner, LowPriorClusterIsPenalised) {
   Diamond w(0.3, 0.05, 0.3, 0.35);  // mean prior 0.25: only B is below it, penalty log 5
   EdgeMemory memory(0.01);

@@ -25,6 +25,7 @@ class EdgeMemory {
   // Whether the edge between a at pa and b at pb is remembered as illegal.
   bool illegal(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const;
   std::size_t size() const { return edges_.size(); }
+  void clear() { edges_.clear(); }
   std::vector<Entry> entries() const;  // ordered by (a, b)
 
  private:

@@ -28,6 +28,8 @@ class EdgePortals {
   // Drops every pair of cluster `a` (deleted, or its id about to be reused), so that the lists
   // crossed() returns hold live pairs only and stay as short as the cell's true neighbourhood.
   void forget(int a);
+  // Drops the pair a-b (its portal proved undrivable).
+  void drop(int a, int b);
 
  private:
   struct Portal {

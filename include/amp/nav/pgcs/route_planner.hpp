@@ -64,11 +64,13 @@ class RoutePlanner {
   // from (it can always return the way it came), which the start joins as well.
   // `where(k)`: the point that stands for cluster k (empty: its centre); NaN leaves k out.
   // `more_neighbours(k, out)` appends edges beyond the Delaunay ones (clusters the robot crossed to).
+  // `blocked_now`: edges left out of this plan only, besides the remembered illegal ones.
   Route plan(const learn::Pgcs& clusters, const EdgeMemory& memory, const Eigen::Vector2d& start,
              const Eigen::Vector2d& target, std::span<const FailedAttachment> failed, double failed_tolerance,
              const std::function<bool(int, int)>& verified = {},
              const std::function<Eigen::Vector2d(int)>& where = {}, int back = -1,
-             const std::function<void(int, std::vector<int>&)>& more_neighbours = {});
+             const std::function<void(int, std::vector<int>&)>& more_neighbours = {},
+             const EdgeMemory* blocked_now = nullptr);
 
  private:
   // The `attach` nearest triangulated centres to p, without failed ones, into out (local indices).
@@ -82,7 +84,7 @@ class RoutePlanner {
     double heading = 0.0;     // direction (radians; NaN for a null arc), for the turning angle at `to`
   };
   // Appends v's arcs to arcs_ once per plan (illegal edges left out); the search states are arcs.
-  void build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, int v,
+  void build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, const EdgeMemory* blocked_now, int v,
                   const std::function<bool(int, int)>& verified,
                   const std::function<void(int, std::vector<int>&)>& more_neighbours);
   void add_arc(int v, int w, double factor);
