@@ -1,23 +1,33 @@
 #include "amp/nav/pgcs/edge_memory.hpp"
 
+#include <algorithm>
+
 namespace amp::nav {
 
 void EdgeMemory::mark(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) {
   if (a > b) return mark(b, a, pb, pa);
-  edges_[{a, b}] = {pa, pb};
+  const int before = blocks(a, b, pa, pb);
+  edges_[{a, b}] = {pa, pb, before + 1};
 }
 
-bool EdgeMemory::illegal(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
-  if (a > b) return illegal(b, a, pb, pa);
+int EdgeMemory::blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
+  if (a > b) return blocks(b, a, pb, pa);
   const auto it = edges_.find({a, b});
-  if (it == edges_.end()) return false;
-  return (it->second.first - pa).squaredNorm() <= tolerance2_ && (it->second.second - pb).squaredNorm() <= tolerance2_;
+  if (it == edges_.end()) return 0;
+  const bool same = (it->second.pa - pa).squaredNorm() <= tolerance2_ && (it->second.pb - pb).squaredNorm() <= tolerance2_;
+  return same ? it->second.blocks : 0;
+}
+
+std::size_t EdgeMemory::size() const {
+  return static_cast<std::size_t>(
+      std::count_if(edges_.begin(), edges_.end(), [&](const auto& e) { return e.second.blocks >= strikes_; }));
 }
 
 std::vector<EdgeMemory::Entry> EdgeMemory::entries() const {
   std::vector<Entry> out;
-  out.reserve(edges_.size());
-  for (const auto& [k, v] : edges_) out.push_back({k.first, k.second, v.first, v.second});
+  for (const auto& [k, v] : edges_) {
+    if (v.blocks >= strikes_) out.push_back({k.first, k.second, v.pa, v.pb});
+  }
   return out;
 }
 

@@ -67,6 +67,10 @@ const core::SettingsSchema<PgcsRunSettings>& PgcsRunSettings::schema() {
                            "m, cell of the reference grid (0: longer side / 256)"),
        core::real_field<S>("detour", &S::detour, 0, 1e6,
                            "radii a leg may slide off its line past what blocks it (0: stop at the first block)"),
+       core::integer_field<S>("strikes", &S::strikes, 1, 1000,
+                              "blocks before an edge is illegal (1: the paper; more: a suspect edge is a last resort first)"),
+       core::real_field<S>("suspect_weight", &S::suspect_weight, 0, 1e9,
+                           "extra route cost per length of an edge blocked fewer than `strikes` times"),
        core::bool_field<S>("retreat", &S::retreat, "after a block, drive back the way the leg came before replanning"),
        core::bool_field<S>("portals", &S::portals,
                            "drive an edge through where the explorer crossed between its clusters"),
@@ -83,10 +87,10 @@ PgcsSession::PgcsSession(NavTask task, PgcsRunSettings run, learn::PgcsSettings 
     : task_(std::move(task)),
       run_((run.validate(), run)),
       pgcs_(pgcs),
-      memory_(task_.robot_radius),
+      memory_(task_.robot_radius, run_.strikes),
       portals_(pgcs.window),
       planner_(RouteSettings{run_.turn_weight * task_.robot_radius, run_.prior_weight * task_.robot_radius, run_.attach,
-                             run_.portals ? run_.unverified_weight : 0.0}),
+                             run_.portals ? run_.unverified_weight : 0.0, run_.suspect_weight}),
       explore_rng_(core::derive_seed(seed, kExplore)),
       query_rng_(core::derive_seed(seed, kQueries)),
       drive_rng_(core::derive_seed(seed, kDrive)),
@@ -280,6 +284,23 @@ std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> PgcsSession::draw_queri
   return out;
 }
 
+void PgcsSession::adopt_exemplars() {
+  // A cluster born late may never have had the robot in its cell since, though the robot stood there
+  // before (under other clusters): such cells would drop out of every route, and with them whole
+  // rooms on a large map (12% of 1,000 clusters on the MovingAI rooms map). The kept exploration
+  // trace (an even subsample of every position) gives them an exemplar where it can.
+  for (const Eigen::Vector2d& p : explored_) {
+    const int k = pgcs_.triangulation().nearest(p);
+    if (k < 0) continue;
+    const auto u = static_cast<std::size_t>(k);
+    if (exemplar_born_[u] != born_[u] || (p - pgcs_.mean(k)).squaredNorm() < (exemplar_[u] - pgcs_.mean(k)).squaredNorm()) {
+      exemplar_[u] = p;
+      exemplar_born_[u] = born_[u];
+    }
+  }
+  exemplars_step_ = pgcs_.steps();
+}
+
 bool PgcsSession::retreat(std::size_t from, QueryRecord& rec, const core::StopCondition* stop) {
   // Back through the positions the leg passed (each one step from the next: the way is known free),
   // to where the leg began, so that the robot replans from a place its route reached and the failed
@@ -311,6 +332,7 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
   rec.start = start;
   rec.target = target;
   reachable();  // brings current_ to the world of now
+  if (run_.exemplars && exemplars_step_ != pgcs_.steps()) adopt_exemplars();
   rec.shortest = current_->shortest_length(start, target);
   RobotState placed;
   placed.position = start;

@@ -32,6 +32,9 @@ RoutePlanner::RoutePlanner(RouteSettings settings) : settings_(settings) {
   if (!(settings_.unverified_weight >= 0.0) || !std::isfinite(settings_.unverified_weight)) {
     throw ParameterError("unverified_weight must be a finite number >= 0");
   }
+  if (!(settings_.suspect_weight >= 0.0) || !std::isfinite(settings_.suspect_weight)) {
+    throw ParameterError("suspect_weight must be a finite number >= 0");
+  }
 }
 
 void RoutePlanner::nearest_centres(const learn::Pgcs& clusters, const Eigen::Vector2d& p,
@@ -87,10 +90,12 @@ void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& mem
     const int w = local_of_[static_cast<std::size_t>(id)];
     if (!std::isfinite(points_[w].x())) continue;
     if (std::any_of(arcs_.begin() + arcs_begin_[v], arcs_.end(), [&](const Arc& a) { return a.to == w; })) continue;
-    if (memory.illegal(ids_[v], id, points_[v], points_[w])) continue;
+    const int blocks = memory.blocks(ids_[v], id, points_[v], points_[w]);
+    if (blocks >= memory.strikes()) continue;
     if (blocked_now != nullptr && blocked_now->illegal(ids_[v], id, points_[v], points_[w])) continue;
     const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
-    add_arc(v, w, known ? 1.0 : unverified);
+    // A suspect (blocked before, not yet illegal) is a last resort.
+    add_arc(v, w, (known ? 1.0 : unverified) * (blocks > 0 ? 1.0 + settings_.suspect_weight : 1.0));
   }
   if (links_target_[v] != 0) add_arc(v, static_cast<int>(points_.size()) - 1, 1.0);
   arcs_end_[v] = static_cast<int>(arcs_.size());
@@ -157,7 +162,12 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   closed_.clear();
   heap_.clear();
   const std::greater<std::pair<double, int>> later;
-  auto h = [&](int v) { return (points_[v] - target).norm(); };
+  h_.assign(static_cast<std::size_t>(n), -1.0);
+  auto h = [&](int v) {  // the straight distance to the target, once per node
+    double& d = h_[static_cast<std::size_t>(v)];
+    if (d < 0.0) d = (points_[v] - target).norm();
+    return d;
+  };
   auto relax = [&](int from_arc, int a, double c) {
     if (c >= g_[static_cast<std::size_t>(a)]) return;
     g_[static_cast<std::size_t>(a)] = c;

@@ -79,6 +79,29 @@ TEST(RoutePlanner, EdgeBlockedForThisPlanIsLeftOutLikeAnIllegalOne) {
             (std::vector<int>{w.a, w.b, w.c}));
 }
 
+TEST(RoutePlanner, SuspectEdgeIsALastResort) {
+  Diamond w;
+  EdgeMemory memory(0.01, 2);
+  memory.mark(w.a, w.b, w.g.mean(w.a), w.g.mean(w.b));  // blocked once: a suspect
+  RouteSettings settings{0.0, 0.0, 1};
+  settings.suspect_weight = 100.0;
+  RoutePlanner p(settings);
+  // A-B costs 101 now: round it through D (2 sqrt 2) rather than A-B-C (102).
+  Route r = p.plan(w.g, memory, kStart, kTarget, {}, 0.01);
+  EXPECT_EQ(clusters_of(r), (std::vector<int>{w.a, w.d, w.c}));
+  EXPECT_NEAR(r.cost, 1.0 + 2 * std::sqrt(2.0), 1e-12);
+  // With the ways round D suspect too, A-B (101 + 1) is the cheapest last resort: still a route.
+  memory.mark(w.a, w.d, w.g.mean(w.a), w.g.mean(w.d));
+  memory.mark(w.c, w.d, w.g.mean(w.c), w.g.mean(w.d));
+  r = p.plan(w.g, memory, kStart, kTarget, {}, 0.01);
+  EXPECT_EQ(clusters_of(r), (std::vector<int>{w.a, w.b, w.c}));
+  EXPECT_NEAR(r.cost, 1.0 + 101.0 + 1.0, 1e-12);
+  // A second block makes it illegal: then only the suspects round D remain.
+  memory.mark(w.a, w.b, w.g.mean(w.a), w.g.mean(w.b));
+  r = p.plan(w.g, memory, kStart, kTarget, {}, 0.01);
+  EXPECT_EQ(clusters_of(r), (std::vector<int>{w.a, w.d, w.b, w.c}));
+}
+
 TEST(RoutePlanner, LowPriorClusterIsPenalised) {
   Diamond w(0.3, 0.05, 0.3, 0.35);  // mean prior 0.25: only B is below it, penalty log 5
   EdgeMemory memory(0.01);
@@ -139,6 +162,8 @@ TEST(RoutePlanner, RejectsBadSettings) {
   EXPECT_THROW(RoutePlanner({-1.0, 0.0, 1}), ParameterError);
   EXPECT_THROW(RoutePlanner({1.0, -1.0, 1}), ParameterError);
   EXPECT_THROW(RoutePlanner({1.0, 1.0, 0}), ParameterError);
+  EXPECT_THROW(RoutePlanner({1.0, 1.0, 1, -1.0}), ParameterError);
+  EXPECT_THROW(RoutePlanner({1.0, 1.0, 1, 0.0, -1.0}), ParameterError);
 }
 
 }  // namespace

@@ -10,8 +10,11 @@ namespace amp::nav {
 
 // The graph edges a robot found blocked (Vlassis et al.'s "legal-illegal" map connections), kept
 // across queries. An edge is named by its clusters' ids and remembered with where its ends were:
-// it stays illegal while both ends are within `tolerance` of those places, so an edge whose
+// its record holds while both ends are within `tolerance` of those places, so an edge whose
 // clusters moved on (or whose ids were reused after a deletion) is a new edge, tried afresh.
+// An edge is illegal after `strikes` blocks (1: the paper, at the first); before that it is a
+// suspect, which a planner may still use as a last resort (a leg that clipped a door frame is
+// blocked without its edge being illegal).
 class EdgeMemory {
  public:
   struct Entry {
@@ -19,18 +22,28 @@ class EdgeMemory {
     Eigen::Vector2d pa = Eigen::Vector2d::Zero(), pb = Eigen::Vector2d::Zero();
   };
 
-  explicit EdgeMemory(double tolerance) : tolerance2_(tolerance * tolerance) {}
+  explicit EdgeMemory(double tolerance, int strikes = 1) : tolerance2_(tolerance * tolerance), strikes_(strikes) {}
 
+  // One more block of the edge between a at pa and b at pb (the first, if its ends moved).
   void mark(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb);
-  // Whether the edge between a at pa and b at pb is remembered as illegal.
-  bool illegal(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const;
-  std::size_t size() const { return edges_.size(); }
+  // Blocks on record for the edge as it stands (0: none).
+  int blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const;
+  bool illegal(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
+    return blocks(a, b, pa, pb) >= strikes_;
+  }
+  int strikes() const { return strikes_; }
+  std::size_t size() const;             // illegal edges
+  std::vector<Entry> entries() const;   // the illegal ones, ordered by (a, b)
   void clear() { edges_.clear(); }
-  std::vector<Entry> entries() const;  // ordered by (a, b)
 
  private:
+  struct Record {
+    Eigen::Vector2d pa, pb;
+    int blocks = 0;
+  };
   double tolerance2_;
-  std::map<std::pair<int, int>, std::pair<Eigen::Vector2d, Eigen::Vector2d>> edges_;
+  int strikes_;
+  std::map<std::pair<int, int>, Record> edges_;
 };
 
 }  // namespace amp::nav

@@ -41,12 +41,16 @@ struct PgcsRunSettings {
   double turn_weight = 1.0;                  // route cost per radian turned, in radii
   double prior_weight = 1.0;                 // route cost per unit of log(mean prior / prior), in radii
   int attach = 3;                            // start and target join this many nearest centres
-  int max_replans = 25;                      // a query gives up after this many replans
+  int max_replans = 100;                     // a query gives up after this many replans (a safety net)
   double block_distance = 0.5;               // radii: a sensor reading ahead below this is a block
   // Radii a leg may slide off its line past a block (StraightLegSettings::detour). 4: legs that
   // graze a door frame get through; office queries solved 99.2% against 97.5% with 0, MovingAI
   // rooms 43% against 30% (6 seeds; docs/pgcs.md).
   double detour = 4.0;
+  // Blocks before an edge is illegal (EdgeMemory); 2: a blocked edge stays a last resort once (a
+  // leg that clipped a door frame cut whole rooms off the MovingAI rooms map with 1).
+  int strikes = 2;
+  double suspect_weight = 100.0;             // extra route cost per length of an edge blocked, not yet illegal
   bool retreat = true;                       // after a block, drive back the way the leg came, then replan
   double reference_cell = 0.0;               // m, the reference grid's cell; 0: longer side / 256
   bool portals = true;                       // drive an edge through where the explorer crossed it (EdgePortals)
@@ -155,6 +159,8 @@ class PgcsSession {
   std::vector<Eigen::Vector2d> explored_;
   // Drives back through rec.trace[from - 1 ..] reversed; false when `stop` fired.
   bool retreat(std::size_t from, QueryRecord& rec, const core::StopCondition* stop);
+  void adopt_exemplars();  // exemplars from the kept exploration trace, once the clusters stand still
+  long exemplars_step_ = -1;  // the clusters' step adopt_exemplars ran at
   std::vector<FailedAttachment> failed_;
   EdgeMemory blocked_now_{0.0};              // verified edges blocked in the query under way
   std::vector<Eigen::Vector2d> path_back_;

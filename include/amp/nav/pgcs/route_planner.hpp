@@ -21,6 +21,9 @@ struct RouteSettings {
   // Extra cost per length of an edge between clusters that is not `verified` (the robot was never
   // seen crossing between them): length * (1 + unverified_weight). 0: the paper's A*.
   double unverified_weight = 0.0;
+  // Extra cost per length of an edge blocked before but not yet illegal (EdgeMemory's strikes > 1):
+  // length * (1 + suspect_weight), so that it is tried again only when nothing else joins.
+  double suspect_weight = 100.0;
 };
 
 // A leg end that failed for this query: the robot, near `point`, could not drive to (or from)
@@ -48,7 +51,7 @@ struct Route {
 // so smooth routes through often-visited clusters win. The turn term makes the cost depend on the
 // previous node: the search runs on directed edges (u, v). The heuristic |v - target| is
 // admissible and consistent (every other term is >= 0), so the first expansion of the target is
-// optimal. Edges the EdgeMemory holds and the failed attachments are left out. Beyond the paper,
+// optimal. Edges the EdgeMemory holds illegal and the failed attachments are left out. Beyond the paper,
 // edges the robot has not been seen crossing may cost more (unverified_weight), so that routes
 // keep to the ways the robot actually went (through doors, not through the walls beside them).
 class RoutePlanner {
@@ -96,6 +99,7 @@ class RoutePlanner {
   std::vector<int> ids_;                     // local index -> cluster id
   std::vector<Eigen::Vector2d> points_;      // local index -> position (start, target last)
   std::vector<double> penalty_;              // local index -> prior penalty (NaN: not computed yet)
+  std::vector<double> h_;                    // local index -> heuristic (negative: not computed yet)
   const learn::Pgcs* clusters_ = nullptr;    // the clusters of the plan under way
   double log_mean_prior_ = 0.0;
   std::vector<int> arcs_begin_, arcs_end_;   // local index -> its arcs in arcs_ (begin -1: not built)

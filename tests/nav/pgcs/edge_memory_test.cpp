@@ -1,0 +1,46 @@
+#include "amp/nav/pgcs/edge_memory.hpp"
+
+#include <gtest/gtest.h>
+
+namespace amp::nav {
+namespace {
+
+using V = Eigen::Vector2d;
+
+TEST(EdgeMemory, OneStrikeIsThePapersIllegalEdge) {
+  EdgeMemory m(0.1);
+  EXPECT_FALSE(m.illegal(1, 2, V(0, 0), V(1, 0)));
+  m.mark(2, 1, V(1, 0), V(0, 0));  // either order
+  EXPECT_TRUE(m.illegal(1, 2, V(0, 0), V(1, 0)));
+  EXPECT_TRUE(m.illegal(2, 1, V(1, 0), V(0, 0)));
+  EXPECT_EQ(m.size(), 1u);
+  ASSERT_EQ(m.entries().size(), 1u);
+  EXPECT_EQ(m.entries()[0].a, 1);
+  EXPECT_EQ(m.entries()[0].pb, V(1, 0));
+}
+
+TEST(EdgeMemory, BlocksCountUpToTheStrikes) {
+  EdgeMemory m(0.1, 2);
+  m.mark(1, 2, V(0, 0), V(1, 0));
+  EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1, 0)), 1);
+  EXPECT_FALSE(m.illegal(1, 2, V(0, 0), V(1, 0)));  // a suspect
+  EXPECT_EQ(m.size(), 0u);
+  EXPECT_TRUE(m.entries().empty());
+  m.mark(1, 2, V(0.05, 0), V(1, 0));  // within the tolerance: the same edge
+  EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1, 0)), 2);
+  EXPECT_TRUE(m.illegal(1, 2, V(0, 0), V(1, 0)));
+  EXPECT_EQ(m.size(), 1u);
+}
+
+TEST(EdgeMemory, AnEdgeWhoseEndsMovedStartsAfresh) {
+  EdgeMemory m(0.1, 2);
+  m.mark(1, 2, V(0, 0), V(1, 0));
+  EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1.5, 0)), 0);  // cluster 2 moved 0.5 > 0.1
+  m.mark(1, 2, V(0, 0), V(1.5, 0));
+  EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1.5, 0)), 1);  // one block of the new edge, not two
+  m.clear();
+  EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1.5, 0)), 0);
+}
+
+}  // namespace
+}  // namespace amp::nav
