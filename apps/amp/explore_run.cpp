@@ -80,6 +80,7 @@ nlohmann::ordered_json flat_record(const world::Problem& problem, const ExploreS
   j["coverage"] = s.coverage();
   j["quantisation_error"] = s.quantisation_error();
   j["illegal_edges"] = s.memory().size();
+  j["suspect_edges"] = s.memory().suspects();
   j["queries"] = r.queries.size();
   j["queries_solved"] = solved;
   j["replans_median"] = median_or_null(replans);
@@ -174,7 +175,9 @@ viz::PgcsDrawing drawing_of(const world::Problem& problem, const nav::PgcsSessio
   for (const auto& [a, b] : k.triangulation().edges()) {
     if (!s.memory().illegal(a, b, k.mean(a), k.mean(b))) d.legal_edges.emplace_back(k.mean(a), k.mean(b));
   }
-  for (const nav::EdgeMemory::Entry& e : s.memory().entries()) d.illegal_edges.emplace_back(e.pa, e.pb);
+  for (const nav::EdgeMemory::Entry& e : s.memory().entries()) {
+    (e.blocks >= s.memory().strikes() ? d.illegal_edges : d.suspect_edges).emplace_back(e.pa, e.pb);
+  }
   d.explored = s.exploration_trace();
   d.start = s.task().start;
   d.robot_radius = s.task().robot_radius;

@@ -60,6 +60,9 @@ void draw_edges(SvgCanvas& c, const PgcsDrawing& d, double opacity) {
   Style illegal{"none", kIllegalEdge, 1.8, 0.95};
   illegal.dash = "6 4";
   for (const auto& [a, b] : d.illegal_edges) c.line(a, b, illegal);
+  Style suspect{"none", kIllegalEdge, 1.4, 0.7};
+  suspect.dash = "2 3";
+  for (const auto& [a, b] : d.suspect_edges) c.line(a, b, suspect);
   c.end_group();
 }
 
@@ -129,6 +132,9 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
   legend.item(kClusterColor, caption, 0.4);
   legend.item(kLegalEdge, "legal edges: " + std::to_string(d.legal_edges.size()));
   legend.item(kIllegalEdge, "illegal edges (dashed): " + std::to_string(d.illegal_edges.size()));
+  if (!d.suspect_edges.empty()) {
+    legend.item(kIllegalEdge, "blocked, not yet illegal (dotted): " + std::to_string(d.suspect_edges.size()), 0.7);
+  }
   legend.item(kStartColor, "start");
   if (!d.appeared.empty()) legend.item(kAppeared, "appeared while exploring");
   return c.str();

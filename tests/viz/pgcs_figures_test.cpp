@@ -53,6 +53,19 @@ TEST(PgcsFigures, Figure1DrawsCirclesBesideTheGraph) {
   EXPECT_NE(illegal.find("stroke-dasharray"), std::string::npos);
   EXPECT_NE(svg.find("class=\"graph-panel\" transform=\"translate("), std::string::npos);
   EXPECT_EQ(count(svg, "class=\"obstacles\""), 2u);  // the map under both panels
+  EXPECT_EQ(svg.find("not yet illegal"), std::string::npos);  // no suspects: no legend line for them
+}
+
+TEST(PgcsFigures, SuspectEdgesAreDottedBesideTheIllegalOnes) {
+  const amp::world::Problem problem = amp::world::load_problem(kOk);
+  PgcsDrawing d = three_clusters();
+  d.suspect_edges = {{{2, 2}, {5, 8}}};
+  const std::string svg = amp::viz::pgcs_figure1_svg(problem, d, "test");
+  const std::string blocked = group(svg, "illegal-edges");
+  EXPECT_EQ(count(blocked, "<line"), 2u);
+  EXPECT_NE(blocked.find("stroke-dasharray=\"6 4\""), std::string::npos);
+  EXPECT_NE(blocked.find("stroke-dasharray=\"2 3\""), std::string::npos);
+  EXPECT_NE(svg.find("blocked, not yet illegal (dotted): 1"), std::string::npos);
 }
 
 TEST(PgcsFigures, CurvesShowClosedPriorOnlyWhenADoorClosed) {

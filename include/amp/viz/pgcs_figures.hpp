@@ -27,6 +27,7 @@ struct PgcsDrawing {
   std::vector<ClusterCircle> clusters;
   std::vector<Segment2> legal_edges;    // graph edges not known to be blocked
   std::vector<Segment2> illegal_edges;  // blocked ones, at the places their ends had when found
+  std::vector<Segment2> suspect_edges;  // blocked fewer times than make an edge illegal
   std::vector<Eigen::Vector2d> explored;  // the exploration's trace (thinned)
   // Obstacles that appeared while exploring (a door that closed), drawn over the map, which shows
   // the world as loaded.

@@ -23,11 +23,12 @@ std::size_t EdgeMemory::size() const {
       std::count_if(edges_.begin(), edges_.end(), [&](const auto& e) { return e.second.blocks >= strikes_; }));
 }
 
+std::size_t EdgeMemory::suspects() const { return edges_.size() - size(); }
+
 std::vector<EdgeMemory::Entry> EdgeMemory::entries() const {
   std::vector<Entry> out;
-  for (const auto& [k, v] : edges_) {
-    if (v.blocks >= strikes_) out.push_back({k.first, k.second, v.pa, v.pb});
-  }
+  out.reserve(edges_.size());
+  for (const auto& [k, v] : edges_) out.push_back({k.first, k.second, v.pa, v.pb, v.blocks});
   return out;
 }
 

@@ -44,6 +44,7 @@ std::map<std::string, double> pgcs_metrics(const PgcsSession& session, const std
           {"replans_max", replans_max},
           {"path_ratio_median", median(ratios)},
           {"illegal_edges", static_cast<double>(session.memory().size())},
+          {"suspect_edges", static_cast<double>(session.memory().suspects())},
           {"query_time_median_s", median(times)}};
 }
 

@@ -25,11 +25,15 @@ TEST(EdgeMemory, BlocksCountUpToTheStrikes) {
   EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1, 0)), 1);
   EXPECT_FALSE(m.illegal(1, 2, V(0, 0), V(1, 0)));  // a suspect
   EXPECT_EQ(m.size(), 0u);
-  EXPECT_TRUE(m.entries().empty());
+  EXPECT_EQ(m.suspects(), 1u);
+  ASSERT_EQ(m.entries().size(), 1u);
+  EXPECT_EQ(m.entries()[0].blocks, 1);
   m.mark(1, 2, V(0.05, 0), V(1, 0));  // within the tolerance: the same edge
   EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1, 0)), 2);
   EXPECT_TRUE(m.illegal(1, 2, V(0, 0), V(1, 0)));
   EXPECT_EQ(m.size(), 1u);
+  EXPECT_EQ(m.suspects(), 0u);
+  EXPECT_EQ(m.entries()[0].blocks, 2);
 }
 
 TEST(EdgeMemory, AnEdgeWhoseEndsMovedStartsAfresh) {

@@ -20,6 +20,7 @@ class EdgeMemory {
   struct Entry {
     int a = -1, b = -1;  // a < b
     Eigen::Vector2d pa = Eigen::Vector2d::Zero(), pb = Eigen::Vector2d::Zero();
+    int blocks = 0;  // illegal when >= strikes(), else a suspect
   };
 
   explicit EdgeMemory(double tolerance, int strikes = 1) : tolerance2_(tolerance * tolerance), strikes_(strikes) {}
@@ -33,7 +34,8 @@ class EdgeMemory {
   }
   int strikes() const { return strikes_; }
   std::size_t size() const;             // illegal edges
-  std::vector<Entry> entries() const;   // the illegal ones, ordered by (a, b)
+  std::size_t suspects() const;         // edges blocked, not yet illegal
+  std::vector<Entry> entries() const;   // every edge blocked, illegal or suspect, ordered by (a, b)
   void clear() { edges_.clear(); }
 
  private:
