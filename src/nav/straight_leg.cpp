@@ -110,4 +110,20 @@ LegResult drive_straight(Simulator& sim, const Eigen::Vector2d& to, double speed
   }
 }
 
+LegResult drive_back(Simulator& sim, std::span<const Eigen::Vector2d> path, double speed, core::Rng& rng,
+                     const core::StopCondition* stop, std::vector<Eigen::Vector2d>* trace) {
+  const StraightLegSettings back{0.0, 20, 3.0, 0.0};  // touch only: the way was free a moment ago
+  LegResult out;
+  for (auto it = path.rbegin(); it != path.rend(); ++it) {
+    const LegResult r = drive_straight(sim, *it, speed, back, rng, stop, trace);
+    out.travelled += r.travelled;
+    out.steps += r.steps;
+    if (r.end != LegEnd::kArrived) {
+      out.end = r.end;
+      return out;
+    }
+  }
+  return out;
+}
+
 }  // namespace amp::nav

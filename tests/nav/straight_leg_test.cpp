@@ -98,5 +98,20 @@ TEST(StraightLeg, DetourAllowanceStillStopsAtAWall) {
   for (const V& p : trace) EXPECT_TRUE(sim.world().disc_free(p, 0.05));
 }
 
+TEST(StraightLeg, DriveBackRetracesABlockedLegToItsStart) {
+  const V start(0.5, 0.3);
+  Simulator sim = make_sim(start);
+  core::Rng rng(1);
+  std::vector<V> path{start};
+  const LegResult out = drive_straight(sim, V(1.5, 0.3), 0.02, {0.025, 20, 3.0, 0.1}, rng, nullptr, &path);
+  ASSERT_EQ(out.end, LegEnd::kBlocked);  // slid along the wall, then gave up
+  std::vector<V> back;
+  const LegResult r = drive_back(sim, path, 0.02, rng, nullptr, &back);
+  EXPECT_EQ(r.end, LegEnd::kArrived);
+  EXPECT_EQ(sim.state().position, start);
+  EXPECT_NEAR(r.travelled, out.travelled, 1e-9);  // the same way, reversed
+  for (const V& p : back) EXPECT_TRUE(sim.world().disc_free(p, 0.05));
+}
+
 }  // namespace
 }  // namespace amp::nav

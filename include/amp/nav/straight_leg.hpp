@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -42,5 +43,12 @@ struct LegResult {
 // frame slides past it; a wall between the ends still blocks.
 LegResult drive_straight(Simulator& sim, const Eigen::Vector2d& to, double speed, const StraightLegSettings& settings,
                          core::Rng& rng, const core::StopCondition* stop, std::vector<Eigen::Vector2d>* trace);
+
+// Drives back through `path` (positions the robot passed, each a step from the next, ending where it
+// stands), from its end to its front, without sliding: the way back is the way it came. kArrived at
+// path.front(); kBlocked if a step of the way is refused (sensor noise); kStopped when `stop` fires.
+// `path` must not alias `trace`.
+LegResult drive_back(Simulator& sim, std::span<const Eigen::Vector2d> path, double speed, core::Rng& rng,
+                     const core::StopCondition* stop, std::vector<Eigen::Vector2d>* trace);
 
 }  // namespace amp::nav

@@ -302,19 +302,13 @@ void PgcsSession::adopt_exemplars() {
 }
 
 bool PgcsSession::retreat(std::size_t from, QueryRecord& rec, const core::StopCondition* stop) {
-  // Back through the positions the leg passed (each one step from the next: the way is known free),
-  // to where the leg began, so that the robot replans from a place its route reached and the failed
-  // attachments made there hold. Stops early if a step of the way back is blocked (sensor noise).
-  const StraightLegSettings back_leg{0.0, 20, 3.0, 0.0};
-  const double speed = run_.speed * task_.robot_radius;
-  path_back_.assign(rec.trace.begin() + static_cast<std::ptrdiff_t>(from) - 1, rec.trace.end() - 1);
-  for (auto it = path_back_.rbegin(); it != path_back_.rend(); ++it) {
-    const LegResult res = drive_straight(simulator_, *it, speed, back_leg, drive_rng_, stop, &rec.trace);
-    rec.length += res.travelled;
-    if (res.end == LegEnd::kStopped) return false;
-    if (res.end == LegEnd::kBlocked) break;
-  }
-  return true;
+  // Back through the positions the leg passed to where it began, so that the robot replans from a
+  // place its route reached and the failed attachments made there hold. A refused step of the way
+  // back (sensor noise) ends the retreat where the robot stands.
+  path_back_.assign(rec.trace.begin() + static_cast<std::ptrdiff_t>(from) - 1, rec.trace.end());
+  const LegResult res = drive_back(simulator_, path_back_, run_.speed * task_.robot_radius, drive_rng_, stop, &rec.trace);
+  rec.length += res.travelled;
+  return res.end != LegEnd::kStopped;
 }
 
 QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector2d& target,
