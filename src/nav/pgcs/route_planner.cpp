@@ -75,7 +75,7 @@ double RoutePlanner::penalty(int w) {
 void RoutePlanner::add_arc(int v, int w, double factor) {
   const Eigen::Vector2d d = points_[w] - points_[v];
   const double length = d.norm();
-  arcs_.push_back({v, w, factor * length + penalty(w), length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan("")});
+  arcs_.push_back({w, factor * length + penalty(w), length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan("")});
 }
 
 void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, const EdgeMemory* blocked_now, int v,

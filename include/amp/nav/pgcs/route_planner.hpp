@@ -82,7 +82,7 @@ class RoutePlanner {
 
   // A directed edge of this plan's graph, v -> w, with what entering w over it costs but the turn.
   struct Arc {
-    int from = 0, to = 0;     // local indices
+    int to = 0;               // local index
     double cost = 0.0;        // length * (verified ? 1 : 1 + unverified_weight) + penalty of `to`
     double heading = 0.0;     // direction (radians; NaN for a null arc), for the turning angle at `to`
   };
