@@ -16,7 +16,7 @@ double auto_cell(const NavWorld& world, double cell_size) {
 }  // namespace
 
 ReferenceGrid::ReferenceGrid(const NavWorld& world, double radius, double cell_size)
-    : paths_(rasterize_free_space(world, auto_cell(world, cell_size), radius)) {}
+    : mask_(rasterize_free_space(world, auto_cell(world, cell_size), radius)), paths_(mask_.cells()) {}
 
 int ReferenceGrid::cell_near(const Eigen::Vector2d& p) const {
   const FreeMask& m = mask();
@@ -40,7 +40,7 @@ std::vector<std::uint8_t> ReferenceGrid::reachable_from(const Eigen::Vector2d& p
   const int cell = cell_near(p);
   if (cell < 0) return out;
   paths_.compute(cell);  // distances are symmetric: reachable from p = p reachable from it
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = paths_.distances()[i] < GridShortestPaths::kUnreachable;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = paths_.distances()[i] < world::GridCostToGo::kUnreachable;
   return out;
 }
 
@@ -49,7 +49,7 @@ double ReferenceGrid::shortest_length(const Eigen::Vector2d& a, const Eigen::Vec
   if (ca < 0 || cb < 0) return std::numeric_limits<double>::infinity();
   if (paths_.goal() != cb) paths_.compute(cb);
   const double d = paths_.distance(ca);
-  if (d == GridShortestPaths::kUnreachable) return d;
+  if (d == world::GridCostToGo::kUnreachable) return d;
   return d + (a - mask().cell_center(ca)).norm() + (b - mask().cell_center(cb)).norm();
 }
 

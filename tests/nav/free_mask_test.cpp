@@ -6,7 +6,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/nav/grid_nav_world.hpp"
-#include "amp/nav/grid_shortest_paths.hpp"
+#include "amp/world/grid_cost_to_go.hpp"
 #include "amp/nav/polygon_nav_world.hpp"
 
 namespace amp::nav {
@@ -39,9 +39,9 @@ TEST(FreeMask, PolygonWorldInflatedByTheRadius) {
 TEST(FreeMask, ShortestPathAroundARasterisedBox) {
   // From cell (2, 5) to (7, 5) round the box inflated by 0.6, over the top: up 1, a diagonal to
   // (3, 7), 3 along to (6, 7) (a diagonal at (5, 7) would cut the blocked (5, 6)), a diagonal, down 1.
-  GridShortestPaths sp(rasterize_free_space(box_world(), 1.0, 0.6));
-  sp.compute(sp.mask().index(7, 5));
-  EXPECT_NEAR(sp.distance(sp.mask().index(2, 5)), 5.0 + 2.0 * std::sqrt(2.0), 1e-12);
+  world::GridCostToGo sp(rasterize_free_space(box_world(), 1.0, 0.6).cells());
+  sp.compute(sp.index(7, 5));
+  EXPECT_NEAR(sp.distance(sp.index(2, 5)), 5.0 + 2.0 * std::sqrt(2.0), 1e-12);
 }
 
 TEST(FreeMask, MapCellsFollowTheMap) {

@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "amp/world/grid_cost_to_go.hpp"
+
 namespace amp::nav {
 
 class NavWorld;
@@ -29,6 +31,8 @@ class FreeMask {
   bool free(int cell) const { return free_[static_cast<std::size_t>(cell)] != 0; }
   void set_free(int x, int y, bool f) { free_[static_cast<std::size_t>(index(x, y))] = f ? 1 : 0; }
   std::size_t free_count() const;
+  // The cells as a search grid (no costs).
+  world::GridCells cells() const { return {width_, height_, cell_size_, free_, {}}; }
 
   Eigen::Vector2d cell_center(int x, int y) const {
     return origin_ + cell_size_ * Eigen::Vector2d(x + 0.5, y + 0.5);

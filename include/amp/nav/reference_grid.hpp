@@ -4,7 +4,8 @@
 
 #include <Eigen/Core>
 
-#include "amp/nav/grid_shortest_paths.hpp"
+#include "amp/nav/free_mask.hpp"
+#include "amp/world/grid_cost_to_go.hpp"
 
 namespace amp::nav {
 
@@ -20,7 +21,7 @@ class ReferenceGrid {
   // rasterize_free_space does.
   ReferenceGrid(const NavWorld& world, double radius, double cell_size = 0.0);
 
-  const FreeMask& mask() const { return paths_.mask(); }
+  const FreeMask& mask() const { return mask_; }
   // The free cell holding p, or the free one of its 8 neighbours nearest to p; -1 when none is free
   // (p outside, or in a gap narrower than a cell).
   int cell_near(const Eigen::Vector2d& p) const;
@@ -31,7 +32,8 @@ class ReferenceGrid {
   double shortest_length(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
  private:
-  GridShortestPaths paths_;
+  FreeMask mask_;
+  world::GridCostToGo paths_;
 };
 
 }  // namespace amp::nav

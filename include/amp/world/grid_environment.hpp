@@ -53,10 +53,11 @@ class GridObstacles {
   std::vector<std::int32_t> right_;
 };
 
-// The robot of a map world: a disc (state x, y) or a rigid planar body of polygons and circles in
-// its own frame (state x, y, theta).
+// The robot of a map world: a disc (state x, y), a point (state x, y: the robot occupies the cell it
+// is in, as MovingAI's benchmarks assume) or a rigid planar body of polygons and circles in its own
+// frame (state x, y, theta).
 struct GridRobot {
-  enum class Kind { kDisc, kRigid };
+  enum class Kind { kDisc, kPoint, kRigid };
   Kind kind = Kind::kDisc;
   double radius = 0.0;  // disc
   Shapes2d body;        // rigid, body frame
@@ -83,8 +84,8 @@ class GridEnvironment final : public Environment {
   const OccupancyGrid& grid() const { return obstacles_.grid(); }
   const GridObstacles& obstacles() const { return obstacles_; }
   const GridRobot& robot() const { return robot_; }
-  // Number of coordinates of a state: 2 for a disc, 3 for a rigid body.
-  int state_dimension() const { return robot_.kind == GridRobot::Kind::kDisc ? 2 : 3; }
+  // Number of coordinates of a state: 2 for a disc or a point, 3 for a rigid body.
+  int state_dimension() const { return robot_.kind == GridRobot::Kind::kRigid ? 3 : 2; }
 
  private:
   GridObstacles obstacles_;

@@ -11,6 +11,7 @@ const PlannerRegistry& builtin_planners() {
     register_uas_planners(r);
     register_competence_prms(r);
     register_rrt_connect(r);
+    register_grid_dp(r);
     return r;
   }();
   return registry;

@@ -34,6 +34,32 @@ double polygon_width(const Polygon& poly) {
   return best;
 }
 
+// A point is free iff it lies inside the map and in no closed blocked square: strictly positive
+// distance to every blocked square and to the map's outside (a point on a blocked square's edge
+// touches it).
+class PointChecker final : public ValidityChecker {
+ public:
+  PointChecker(const GridObstacles& obstacles, core::Counters& counters)
+      : ValidityChecker(counters), obstacles_(obstacles) {}
+
+ private:
+  bool check(const State& s) const override {
+    Eigen::Vector2d q;
+    return obstacles_.point_distance({s[0], s[1]}, q) > 0.0;
+  }
+  Clearance compute_clearance(const State& s) const override {
+    Eigen::Vector2d q;
+    const double d = obstacles_.point_distance({s[0], s[1]}, q);
+    return {d, {s[0], s[1], 0.0}, {q.x(), q.y(), 0.0}};
+  }
+  double compute_free_radius(const State& s) const override { return check(s) ? compute_clearance(s).distance : 0.0; }
+  double compute_motion_bound(const State& a, const State& b) const override {
+    return std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+
+  const GridObstacles& obstacles_;
+};
+
 class DiscChecker final : public ValidityChecker {
  public:
   DiscChecker(const GridObstacles& obstacles, double radius, core::Counters& counters)
@@ -134,6 +160,7 @@ class RigidChecker final : public ValidityChecker {
 
 GridEnvironment::GridEnvironment(std::shared_ptr<const OccupancyGrid> grid, GridRobot robot)
     : obstacles_(std::move(grid)), robot_(std::move(robot)) {
+  if (robot_.kind == GridRobot::Kind::kPoint) return;  // no size: diameter and radius 0
   if (robot_.kind == GridRobot::Kind::kDisc) {
     if (!(robot_.radius > 0.0) || !std::isfinite(robot_.radius)) {
       throw ParameterError("disc robot: radius must be positive, got " + std::to_string(robot_.radius));
@@ -165,6 +192,7 @@ std::unique_ptr<ValidityChecker> GridEnvironment::make_checker(core::Counters& c
   if (robot_.kind == GridRobot::Kind::kDisc) {
     return std::make_unique<DiscChecker>(obstacles_, robot_.radius, counters);
   }
+  if (robot_.kind == GridRobot::Kind::kPoint) return std::make_unique<PointChecker>(obstacles_, counters);
   return std::make_unique<RigidChecker>(obstacles_, robot_.body, counters);
 }
 
@@ -181,8 +209,8 @@ Outline GridEnvironment::obstacle_outline() const {
 
 Shapes2d GridEnvironment::robot_outline(const State& s) const {
   Shapes2d out;
-  if (robot_.kind == GridRobot::Kind::kDisc) {
-    out.circles.push_back({Eigen::Vector2d(s[0], s[1]), robot_.radius});
+  if (robot_.kind != GridRobot::Kind::kRigid) {
+    out.circles.push_back({Eigen::Vector2d(s[0], s[1]), robot_.radius});  // radius 0 for a point
     return out;
   }
   const double c = std::cos(s[2]), sn = std::sin(s[2]);

@@ -45,12 +45,15 @@ LoadedWorld parse_grid_world(const YamlFields& root) {
   if (type == "disc") {
     robot.kind = GridRobot::Kind::kDisc;
     robot.radius = robot_fields.positive("radius");
+  } else if (type == "point") {
+    robot_fields.allow_only({"type"});
+    robot.kind = GridRobot::Kind::kPoint;
   } else if (type == "rigid2d") {
     robot.kind = GridRobot::Kind::kRigid;
     robot.body = parse_shapes2d(robot_fields.child("shapes"));  // the planar worlds' shape items
     if (robot.body.empty()) robot_fields.fail("shapes", "expected at least one shape");
   } else {
-    robot_fields.fail("type", "expected disc or rigid2d, got '" + type + "'");
+    robot_fields.fail("type", "expected disc, point or rigid2d, got '" + type + "'");
   }
 
   const double fraction = root.positive("resolution", kDefaultResolutionFraction);
@@ -58,7 +61,7 @@ LoadedWorld parse_grid_world(const YamlFields& root) {
   const Eigen::AlignedBox2d e = grid->extent();
   auto env = std::make_shared<const GridEnvironment>(grid, std::move(robot));
   std::shared_ptr<core::JointSpace> space;
-  if (env->robot().kind == GridRobot::Kind::kDisc) {
+  if (env->robot().kind != GridRobot::Kind::kRigid) {
     space = std::make_shared<core::JointSpace>(
         core::make_rn_space({e.min().x(), e.min().y()}, {e.max().x(), e.max().y()}));
   } else {

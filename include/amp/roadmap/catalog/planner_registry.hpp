@@ -29,5 +29,7 @@ void register_uas_planners(PlannerRegistry& registry);
 void register_competence_prms(PlannerRegistry& registry);
 // `rrt-connect` (trees/rrt_connect.hpp).
 void register_rrt_connect(PlannerRegistry& registry);
+// `grid-dp` (grid/grid_dp.hpp).
+void register_grid_dp(PlannerRegistry& registry);
 
 }  // namespace amp::roadmap
