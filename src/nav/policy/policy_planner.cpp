@@ -1,0 +1,65 @@
+#include "amp/nav/policy/policy_planner.hpp"
+
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/nav/grid_nav_world.hpp"
+#include "amp/nav/policy/waypoint_projection.hpp"
+#include "amp/world/grid_cost_to_go.hpp"
+
+namespace amp::nav {
+
+namespace {
+
+std::string point_text(const Eigen::Vector2d& p) { return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ")"; }
+
+}  // namespace
+
+PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal, double radius,
+                       const PolicyPlannerSettings& settings) {
+  if (!world.disc_free(start, radius)) throw ParameterError("start " + point_text(start) + ": the robot's footprint is not free there");
+  if (!world.disc_free(goal, radius)) throw ParameterError("goal " + point_text(goal) + ": the robot's footprint is not free there");
+  const PolicyValue value(world, radius, settings.reward);
+  world::InflationSettings inflation;
+  inflation.inscribed_radius = radius;
+  inflation.inflation_radius = radius + settings.inflation;
+  inflation.cost_scaling_factor = settings.cost_scaling_factor;
+  inflation.penalty = settings.penalty;
+  world::GridCostToGo dp(world::inflate(world.obstacles(), inflation));
+  const world::OccupancyGrid& grid = world.grid();
+  // The cell of a point, or a free neighbour the disc reaches straight (its own may be too near a wall).
+  auto cell_of = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector2i c = grid.world_to_cell(p);
+    int best = -1;
+    double best_d = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (!dp.free(c.x() + dx, c.y() + dy)) continue;
+        const Eigen::Vector2d q = grid.cell_center(c.x() + dx, c.y() + dy);
+        const double d = (q - p).norm();
+        if ((best < 0 || d < best_d) && segment_free(world, p, q, radius)) best = dp.index(c.x() + dx, c.y() + dy), best_d = d;
+      }
+    }
+    return best;
+  };
+  const int from = cell_of(start), to = cell_of(goal);
+  if (from >= 0 && to >= 0) dp.compute(to);
+  if (from < 0 || to < 0 || dp.distance(from) == world::GridCostToGo::kUnreachable) {
+    world::GridCostToGo point(world::inflate(world.obstacles(), {}));
+    const Eigen::Vector2i a = grid.world_to_cell(start), b = grid.world_to_cell(goal);
+    point.compute(point.index(b.x(), b.y()));
+    if (point.distance(point.index(a.x(), a.y())) < world::GridCostToGo::kUnreachable) {
+      throw ParameterError("no passage wide enough for the footprint (radius " + std::to_string(radius) +
+                           ") joins the start and the goal");
+    }
+    throw ParameterError("the goal " + point_text(goal) + " is not reachable from the start " + point_text(start));
+  }
+  PolicyPlan plan;
+  const std::vector<int> cells = dp.path(from);
+  for (int c : cells) plan.dp_path.push_back(grid.cell_center(c % grid.width(), c / grid.width()));
+  const GridFrame frame{grid.width(), grid.resolution(), grid.origin()};
+  plan.search = search_policy(project_to_waypoints(cells, frame, start, goal, settings.search.v_max), value, settings.search);
+  return plan;
+}
+
+}  // namespace amp::nav

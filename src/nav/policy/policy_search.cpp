@@ -1,0 +1,156 @@
+#include "amp/nav/policy/policy_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/nav/nav_world.hpp"
+
+namespace amp::nav {
+
+void PolicySearchSettings::validate() const {
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw ParameterError(std::string(name) + " must be > 0, got " + std::to_string(v));
+  };
+  if (!(obstacle_weight >= 0.0) || !std::isfinite(obstacle_weight)) {
+    throw ParameterError("obstacle_weight must be >= 0, got " + std::to_string(obstacle_weight));
+  }
+  positive(min_move, "min_move");
+  positive(tolerance, "tolerance");
+  positive(v_min, "v_min");
+  if (max_sweeps < 1) throw ParameterError("max_sweeps must be >= 1, got " + std::to_string(max_sweeps));
+  if (max_insertions < 0) throw ParameterError("max_insertions must be >= 0, got " + std::to_string(max_insertions));
+  if (!(v_factor > 1.0) || !std::isfinite(v_factor)) throw ParameterError("v_factor must be > 1, got " + std::to_string(v_factor));
+  if (!(v_max >= v_min) || !std::isfinite(v_max)) {
+    throw ParameterError("v_max must be >= v_min, got " + std::to_string(v_max));
+  }
+}
+
+bool segment_free(const NavWorld& world, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double r) {
+  const double len = (b - a).norm();
+  constexpr double kTouch = 1e-9;
+  for (double t = 0.0;;) {
+    const Eigen::Vector2d p = len > 0.0 ? Eigen::Vector2d(a + (t / len) * (b - a)) : a;
+    const double c = world.clearance(p, r);
+    if (c <= kTouch) return false;
+    if (t >= len) return true;
+    t = std::min(len, t + c);  // no obstacle within c of p
+  }
+}
+
+namespace {
+
+Eigen::Vector2d xy(const State& w) { return {w[0], w[1]}; }
+
+void face_along(std::vector<State>& w) {
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    const Eigen::Vector2d d = k + 1 < w.size() ? Eigen::Vector2d(xy(w[k + 1]) - xy(w[k]))
+                                               : (k > 0 ? Eigen::Vector2d(xy(w[k]) - xy(w[k - 1])) : Eigen::Vector2d::Zero());
+    if (d.squaredNorm() > 0.0) w[k][2] = std::atan2(d.y(), d.x());
+    w[k][4] = 0.0;
+  }
+}
+
+// The two segments at inner waypoint j are free for the disc.
+bool free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t j) {
+  return segment_free(value.world(), xy(w[j - 1]), xy(w[j]), value.radius()) &&
+         segment_free(value.world(), xy(w[j]), xy(w[j + 1]), value.radius());
+}
+
+// One sweep of Table 1, step 3; returns the value gained.
+double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s) {
+  double gained = 0.0;
+  for (std::size_t j = 1; j + 1 < w.size(); ++j) {
+    const double before = value.segments(w, j - 1, j + 1);
+    double best = before;
+    // Eq. 11: toward both neighbours, away from the nearest obstacle point.
+    const Eigen::Vector2d p = xy(w[j]);
+    const NearestObstacle zeta = value.world().nearest_obstacle(p);
+    const Eigen::Vector2d grad = (xy(w[j - 1]) - p) + (xy(w[j + 1]) - p) - s.obstacle_weight * (zeta.point - p);
+    for (double alpha = 1.0; alpha * grad.norm() >= s.min_move; alpha *= 0.5) {
+      const State keep = w[j];
+      w[j][0] = p.x() + alpha * grad.x();
+      w[j][1] = p.y() + alpha * grad.y();
+      const double v = value.segments(w, j - 1, j + 1);
+      if (v > best && free_at(value, w, j)) {
+        best = v;
+        break;
+      }
+      w[j] = keep;
+    }
+    // The speed: faster or slower, whichever raises the two segments' value.
+    for (const double f : {s.v_factor, 1.0 / s.v_factor}) {
+      const double old = w[j][3];
+      w[j][3] = std::clamp(old * f, s.v_min, s.v_max);
+      const double v = value.segments(w, j - 1, j + 1);
+      if (v > best) {
+        best = v;
+        break;
+      }
+      w[j][3] = old;
+    }
+    gained += best - before;
+  }
+  return gained;
+}
+
+int search(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s) {
+  int sweeps = 0;
+  while (sweeps < s.max_sweeps) {
+    ++sweeps;
+    const double gained = sweep(w, value, s);
+    face_along(w);
+    if (gained < s.tolerance) break;
+  }
+  return sweeps;
+}
+
+}  // namespace
+
+PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& value, const PolicySearchSettings& settings) {
+  settings.validate();
+  PolicySearchResult out;
+  for (State& w : initial) w[3] = std::clamp(w[3], settings.v_min, settings.v_max);
+  face_along(initial);
+  out.projected = initial;
+  out.value_projected = value.total(initial);
+  std::vector<State> w = std::move(initial);
+  out.sweeps += search(w, value, settings);
+  out.searched = w;
+  out.value_searched = value.total(w);
+  double current = out.value_searched;
+  while (out.insertions < settings.max_insertions && w.size() >= 2) {
+    // Eq. 10: the lowest immediate reward inside a segment, below the reward at both its ends.
+    std::size_t at = w.size();
+    PolicyValue::Lowest pick;
+    for (std::size_t j = 0; j + 1 < w.size(); ++j) {
+      const PolicyValue::Lowest low = value.lowest_on_segment(w, j);
+      const Eigen::Vector2d dir = xy(w[j + 1]) - xy(w[j]);
+      if (low.reward < value.immediate(xy(w[j]), dir, w[j][3]) && low.reward < value.immediate(xy(w[j + 1]), dir, w[j + 1][3]) &&
+          (at == w.size() || low.reward < pick.reward)) {
+        at = j;
+        pick = low;
+      }
+    }
+    if (at == w.size()) break;
+    std::vector<State> trial = w;
+    State inserted = w[at];
+    inserted[0] = pick.point.x();
+    inserted[1] = pick.point.y();
+    inserted[3] = pick.v;
+    trial.insert(trial.begin() + static_cast<std::ptrdiff_t>(at) + 1, inserted);
+    const int sweeps = search(trial, value, settings);
+    out.sweeps += sweeps;
+    const double v = value.total(trial);
+    if (!(v > current + settings.tolerance)) break;  // no insertion raises the value: done
+    w = std::move(trial);
+    current = v;
+    ++out.insertions;
+  }
+  out.final = w;
+  out.value_final = current;
+  return out;
+}
+
+}  // namespace amp::nav

@@ -1,0 +1,80 @@
+#include "amp/nav/policy/policy_planner.hpp"
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "amp/core/error.hpp"
+#include "amp/nav/grid_nav_world.hpp"
+
+namespace amp::nav {
+namespace {
+
+using V = Eigen::Vector2d;
+
+// The paper's lab, on 5 cm cells: a 4 x 3.5 m room, a 10 cm wall with a 60 cm door at x 1.7-2.3
+// (closed when `door` is false), and a corridor above it up to y = 5.
+std::shared_ptr<const GridNavWorld> lab(bool door = true) {
+  auto g = std::make_shared<world::OccupancyGrid>(80, 100, 0.05);
+  for (int y = 70; y < 72; ++y) {
+    for (int x = 0; x < 80; ++x) {
+      if (!door || x < 34 || x >= 46) g->set_state(x, y, world::CellState::kOccupied);
+    }
+  }
+  return std::make_shared<const GridNavWorld>(g);
+}
+
+TEST(PolicyPlanner, OutOfTheLabThroughTheDoor) {
+  const auto world = lab();
+  const V start(1.0, 1.0), goal(3.5, 4.3);
+  const PolicyPlan plan = plan_policy(*world, start, goal, 0.27);
+  const PolicySearchResult& r = plan.search;
+  ASSERT_GE(r.final.size(), 2u);
+  // The phases never lose value, and the start and goal stay put.
+  EXPECT_GE(r.value_searched, r.value_projected);
+  EXPECT_GE(r.value_final, r.value_searched);
+  EXPECT_GT(r.value_final, r.value_projected);  // the projected zigzag is improved on
+  for (const auto* w : {&r.projected, &r.searched, &r.final}) {
+    EXPECT_DOUBLE_EQ((*w).front()[0], start.x());
+    EXPECT_DOUBLE_EQ((*w).front()[1], start.y());
+    EXPECT_DOUBLE_EQ((*w).back()[0], goal.x());
+    EXPECT_DOUBLE_EQ((*w).back()[1], goal.y());
+  }
+  // Every segment of the final policy is free for the 54 cm disc, and it passes the door.
+  bool through_door = false;
+  for (std::size_t j = 1; j < r.final.size(); ++j) {
+    const V a(r.final[j - 1][0], r.final[j - 1][1]), b(r.final[j][0], r.final[j][1]);
+    EXPECT_TRUE(segment_free(*world, a, b, 0.27)) << "segment " << j;
+    if ((a.y() - 3.55) * (b.y() - 3.55) < 0.0) {
+      const double x = a.x() + (3.55 - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+      through_door = x > 1.7 + 0.27 && x < 2.3 - 0.27;
+    }
+  }
+  EXPECT_TRUE(through_door);
+  // Fewer waypoints than the value function's cells, and deterministic.
+  EXPECT_LT(r.final.size(), plan.dp_path.size());
+  const PolicyPlan again = plan_policy(*world, start, goal, 0.27);
+  ASSERT_EQ(again.search.final.size(), r.final.size());
+  for (std::size_t j = 0; j < r.final.size(); ++j) EXPECT_EQ(again.search.final[j], r.final[j]);
+}
+
+TEST(PolicyPlanner, BadRequestsGetOneLineErrors) {
+  const auto world = lab();
+  auto message = [&](const std::shared_ptr<const GridNavWorld>& w, V s, V g, double r) {
+    try {
+      plan_policy(*w, s, g, r);
+    } catch (const ParameterError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(world, V(1, 1), V(3.5, 4.3), 0.35).find("no passage wide enough for the footprint"), std::string::npos);
+  EXPECT_NE(message(lab(false), V(1, 1), V(3.5, 4.3), 0.27).find("not reachable"), std::string::npos);
+  EXPECT_NE(message(world, V(1, 3.55), V(3.5, 4.3), 0.27).find("start"), std::string::npos);
+  EXPECT_NE(message(world, V(1, 1), V(3.9, 4.3), 0.27).find("goal"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace amp::nav
