@@ -54,6 +54,9 @@ class GridCostToGo {
   // Cells from start to the goal, both included, each step to the neighbour that realises the cost
   // (the maximum-likelihood action of the plan); empty when the start cannot reach the goal.
   std::vector<int> path(int start) const;
+  // The neighbour of `cell` that realises its cost (one step of path()); -1 at the goal and for
+  // blocked or unreachable cells.
+  int next(int cell) const;
 
  private:
   struct Move {

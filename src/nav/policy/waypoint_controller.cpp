@@ -6,6 +6,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/joint_space.hpp"
+#include "amp/nav/simulator.hpp"
 
 namespace amp::nav {
 
@@ -45,6 +46,8 @@ Eigen::Vector2d WaypointController::command(const RobotState& s) {
   if (last) v = std::min(v, std::sqrt(2.0 * settings_.accel * dist));
   return {v, settings_.heading_gain * e};
 }
+
+Eigen::Vector2d WaypointController::command(const Simulator& sim) { return command(sim.state()); }
 
 bool WaypointController::arrived(const RobotState& s) const {
   return (s.position - xy(waypoints_.back())).norm() < settings_.goal_tolerance;

@@ -94,31 +94,33 @@ bool GridCostToGo::compute(int goal, const std::function<bool()>& stop) {
   return true;
 }
 
+int GridCostToGo::next(int cell) const {
+  if (goal_ < 0 || cell == goal_ || cell < 0 || static_cast<std::size_t>(cell) >= distance_.size() ||
+      distance(cell) == kUnreachable) {
+    return -1;
+  }
+  const int w = cells_.width, x = cell % w, y = cell / w;
+  int best = -1;
+  double best_cost = kUnreachable;
+  for (const Move& m : moves_) {
+    if (!legal(x, y, m)) continue;
+    const int n = index(x + m.dx, y + m.dy);
+    const double c = distance(n) + step_cost(cell, n, m);
+    if (c < best_cost) {
+      best_cost = c;
+      best = n;
+    }
+  }
+  return best;
+}
+
 std::vector<int> GridCostToGo::path(int start) const {
   std::vector<int> out;
   if (goal_ < 0 || start < 0 || static_cast<std::size_t>(start) >= distance_.size() || distance(start) == kUnreachable) {
     return out;
   }
-  const int w = cells_.width;
-  int cell = start;
-  out.push_back(cell);
   // Every step strictly lowers the cost-to-goal (steps cost >= cell_size), so this ends at the goal.
-  while (cell != goal_ && out.size() <= distance_.size()) {
-    const int x = cell % w, y = cell / w;
-    int best = -1;
-    double best_cost = kUnreachable;
-    for (const Move& m : moves_) {
-      if (!legal(x, y, m)) continue;
-      const int next = index(x + m.dx, y + m.dy);
-      const double c = distance(next) + step_cost(cell, next, m);
-      if (c < best_cost) {
-        best_cost = c;
-        best = next;
-      }
-    }
-    cell = best;
-    out.push_back(cell);
-  }
+  for (int cell = start; cell >= 0 && out.size() <= distance_.size(); cell = next(cell)) out.push_back(cell);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "amp/core/state.hpp"
+#include "amp/nav/motion_controller.hpp"
 #include "amp/nav/robot_model.hpp"
 
 namespace amp::nav {
@@ -25,7 +26,7 @@ struct WaypointControllerSettings {
 // spot when w_j is behind it; toward the last waypoint v is also capped at sqrt(2 accel d) so that
 // it can stop there. Waypoints are 5-D (x, y, theta, v, omega; core::UnicycleSpace's layout);
 // their heading and turn rate are what the search shapes the path with, not set points.
-class WaypointController {
+class WaypointController final : public MotionController {
  public:
   // Throws ParameterError for bad settings or no waypoints.
   WaypointController(std::vector<State> waypoints, WaypointControllerSettings settings = {});
@@ -33,10 +34,11 @@ class WaypointController {
   // The command for the robot at s; first advances past every waypoint within d_approach (eq. 3;
   // the last one is never passed).
   Eigen::Vector2d command(const RobotState& s);
+  Eigen::Vector2d command(const Simulator& sim) override;
   // Index of the waypoint steered to.
   std::size_t current() const { return current_; }
   // Within goal_tolerance of the last waypoint.
-  bool arrived(const RobotState& s) const;
+  bool arrived(const RobotState& s) const override;
   const std::vector<State>& waypoints() const { return waypoints_; }
 
  private:

@@ -1,0 +1,48 @@
+#include "amp/nav/execution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "amp/core/error.hpp"
+#include "amp/core/rng.hpp"
+#include "amp/core/stop_condition.hpp"
+#include "amp/nav/motion_controller.hpp"
+#include "amp/nav/simulator.hpp"
+
+namespace amp::nav {
+
+void MotionNoise::validate() const {
+  if (!(sigma_v >= 0.0) || !std::isfinite(sigma_v) || !(sigma_omega >= 0.0) || !std::isfinite(sigma_omega)) {
+    throw ParameterError("a noise with negative spread: sigma_v " + std::to_string(sigma_v) + ", sigma_omega " +
+                         std::to_string(sigma_omega));
+  }
+}
+
+Execution execute(Simulator& sim, MotionController& controller, const MotionNoise& noise, double time_limit_s,
+                  core::Rng& rng, const core::StopCondition* stop) {
+  noise.validate();
+  Execution out;
+  const double r = sim.robot().radius();
+  const std::size_t blocked0 = sim.blocked_moves();
+  const double t0 = sim.time();
+  out.trace.push_back(sim.state().position);
+  out.min_clearance = sim.next_world().clearance(sim.state().position, r);
+  while (!controller.arrived(sim.state()) && sim.time() - t0 < time_limit_s) {
+    if (stop != nullptr && (sim.step_count() & 63) == 0 && stop->time_up()) break;
+    Eigen::Vector2d cmd = controller.command(sim);
+    cmd.x() *= 1.0 + noise.sigma_v * rng.normal();
+    cmd.y() += noise.sigma_omega * rng.normal();
+    const StepResult step = sim.step(cmd, rng);
+    out.distance += step.travelled;
+    out.trace.push_back(sim.state().position);
+    out.speeds.push_back(step.travelled / sim.time_step());
+    out.min_clearance = std::min(out.min_clearance, sim.world().clearance(sim.state().position, r));
+  }
+  out.arrived = controller.arrived(sim.state());
+  out.time_s = sim.time() - t0;
+  out.collisions = sim.blocked_moves() - blocked0;
+  return out;
+}
+
+}  // namespace amp::nav
