@@ -10,11 +10,11 @@ namespace amp::core {
 
 namespace {
 
+// The shortest text that reads back as v (0.3, not 0.29999999999999999).
 std::string format_number(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
 }
 
 // A whole string parsed as a number, or false.

@@ -12,6 +12,8 @@ const NavigatorRegistry& builtin_navigators() {
   static const NavigatorRegistry registry = [] {
     NavigatorRegistry r;
     register_pgcs(r);
+    register_policy_search(r);
+    register_dwa(r);
     return r;
   }();
   return registry;

@@ -18,11 +18,14 @@ namespace amp::nav {
 struct NavigationOutcome {
   core::RunRecord record;
   std::vector<Eigen::Vector2d> trace;
+  std::vector<double> speeds;    // per step, when the method drives a controller (the velocity profile)
+  double planning_time_s = 0.0;  // measured, so outside the record (which depends on the seed alone)
 };
 
 // A navigation method (PGCS exploration and queries, policy search, DWA, SINS): it drives a
 // simulated robot in the task's world. Every random draw comes from `rng`; the run ends when
-// `stop` fires (status kTimeout) or the method is done. Implementations: PgcsNavigator.
+// `stop` fires (status kTimeout) or the method is done. Implementations: PgcsNavigator,
+// PolicyNavigator, DwaNavigator.
 class Navigator {
  public:
   virtual ~Navigator() = default;

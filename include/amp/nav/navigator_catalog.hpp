@@ -19,6 +19,10 @@ const NavigatorRegistry& builtin_navigators();
 
 // `pgcs` (pgcs/pgcs_navigator.hpp).
 void register_pgcs(NavigatorRegistry& registry);
+// `policy-search` (policy/policy_navigator.hpp).
+void register_policy_search(NavigatorRegistry& registry);
+// `dwa` (dwa/dwa_navigator.hpp).
+void register_dwa(NavigatorRegistry& registry);
 
 // One run of a navigation method on a problem, as `amp bench` does it: the task made from the
 // problem, Rng(seed), a StopCondition(time_limit_s), the run timed and the record's identity

@@ -76,6 +76,8 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
   struct Sample {
     double v, w, heading, clearance;
   };
+  constexpr double kFirstCheck = 0.005;  // m
+  const double here = world.clearance(s.position, r);
   std::vector<Sample> admissible;
   admissible.reserve(static_cast<std::size_t>(settings_.v_samples * settings_.omega_samples));
   auto at = [](double lo, double hi, int i, int n) { return n == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * i / (n - 1); };
@@ -83,24 +85,33 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
     const double v = at(v_lo, v_hi, i, settings_.v_samples);
     for (int k = 0; k < settings_.omega_samples; ++k) {
       const double w = at(w_lo, w_hi, k, settings_.omega_samples);
-      // The arc, checked every `granularity` metres of travel (a disc's rotation sweeps nothing).
+      // The arc, checked every `granularity` metres of travel (a disc's rotation sweeps nothing),
+      // and at its first kFirstCheck metres: a robot touching a wall may only take arcs that leave
+      // it (the simulator refuses moves that do not gain clearance in contact).
       const double length = std::abs(v) * settings_.sim_time;
       const int n = std::max(1, static_cast<int>(std::ceil(length / settings_.granularity)));
+      auto pose = [&](double t, double& heading_out) {
+        heading_out = s.heading + w * t;
+        return Eigen::Vector2d(s.position + (std::abs(w) < 1e-9
+                                                 ? Eigen::Vector2d(v * t * std::cos(s.heading), v * t * std::sin(s.heading))
+                                                 : Eigen::Vector2d(v / w * (std::sin(heading_out) - std::sin(s.heading)),
+                                                                   -v / w * (std::cos(heading_out) - std::cos(s.heading)))));
+      };
       double least = std::numeric_limits<double>::infinity();
-      Eigen::Vector2d end = s.position;
       double heading = s.heading;
+      Eigen::Vector2d end = s.position;
       bool free = true;
+      if (length > 0.0 && here < kFirstCheck) {
+        double h0 = 0.0;
+        free = world.clearance(pose(settings_.sim_time * std::min(1.0, kFirstCheck / length), h0), r) > here;
+      }
       for (int j = 1; j <= n && free; ++j) {
-        const double t = settings_.sim_time * j / n;
-        heading = s.heading + w * t;
-        end = s.position + (std::abs(w) < 1e-9
-                                ? Eigen::Vector2d(v * t * std::cos(s.heading), v * t * std::sin(s.heading))
-                                : Eigen::Vector2d(v / w * (std::sin(heading) - std::sin(s.heading)),
-                                                  -v / w * (std::cos(heading) - std::cos(s.heading))));
+        end = pose(settings_.sim_time * j / n, heading);
         const double c = world.clearance(end, r);
         least = std::min(least, c);
         free = c > 0.0;
       }
+      if (length == 0.0) heading = s.heading + w * settings_.sim_time;
       if (!free) continue;
       const Eigen::Vector2d to = descent(end);
       const double err = to.squaredNorm() > 0.0 ? std::abs(core::angle_difference(heading, std::atan2(to.y(), to.x()))) : 0.0;

@@ -17,8 +17,10 @@ namespace {
 
 using V = Eigen::Vector2d;
 
+// The lab with a 1 m door: at the paper's 60 cm door (3 cm to spare each side) the window's arcs
+// rarely line the robot up with it, as the paper saw of its prior planner (docs/policy-search.md).
 struct Lab {
-  std::shared_ptr<const GridNavWorld> world = test::lab();
+  std::shared_ptr<const GridNavWorld> world = test::lab(true, 4);
   world::GridCostToGo cost{world::inflate(world->obstacles(), {0.27, 0.77, 10.0, 2.0})};
   V start{1.0, 1.0}, goal{3.5, 4.3};
   Lab() { cost.compute(cost.index(70, 86)); }  // the goal's cell
@@ -35,7 +37,7 @@ Execution run_dwa(const Lab& lab, std::uint64_t seed, MotionNoise noise = {}) {
   return execute(sim, dwa, noise, 300.0, rng);
 }
 
-TEST(DynamicWindow, LeavesTheLabThroughTheDoorWithoutTouching) {
+TEST(DynamicWindow, LeavesTheLabThroughAWideDoorWithoutTouching) {
   const Lab lab;
   const Execution e = run_dwa(lab, 3);
   EXPECT_TRUE(e.arrived);

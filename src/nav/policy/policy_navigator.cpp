@@ -1,0 +1,94 @@
+#include "amp/nav/policy/policy_navigator.hpp"
+
+#include <chrono>
+
+#include "amp/core/rng.hpp"
+#include "amp/core/stop_condition.hpp"
+#include "amp/nav/grid_nav_world.hpp"
+#include "amp/nav/navigator_catalog.hpp"
+
+namespace amp::nav {
+
+const core::SettingsSchema<PolicyNavigatorSettings>& PolicyNavigatorSettings::schema() {
+  using S = PolicyNavigatorSettings;
+  static const core::SettingsSchema<S> schema(
+      "policy-search",
+      {core::real_field<S>("d_approach", &S::d_approach, 1e-6, 1e6, "m: switch to the next waypoint within this (eq. 3)"),
+       core::real_field<S>("heading_gain", &S::heading_gain, 1e-6, 1e6, "1/s, turn rate per radian of heading error"),
+       core::real_field<S>("c", &S::c, 0, 1e9, "reward: cost per metre"),
+       core::real_field<S>("c_time", &S::c_time, 0, 1e9, "reward: cost per second"),
+       core::real_field<S>("g", &S::g, 0, 1e9, "reward: reaching the goal"),
+       core::real_field<S>("h", &S::h, 0, 1e9, "reward: cost per metre inside the safety range"),
+       core::real_field<S>("safety", &S::safety, 0, 1e6, "m, safety range at rest beyond the footprint"),
+       core::real_field<S>("safety_per_speed", &S::safety_per_speed, 0, 1e6, "s, safety range growth per m/s"),
+       core::real_field<S>("sigma", &S::sigma, 0, 1e6, "m, G's spread across the path when planning"),
+       core::integer_field<S>("max_insertions", &S::max_insertions, 0, 1e6, "waypoints inserted at most (eq. 10)")});
+  return schema;
+}
+
+PolicyPlannerSettings PolicyNavigatorSettings::planner(const DriveSettings& drive) const {
+  PolicyPlannerSettings p;
+  p.inflation = drive.inflation;
+  p.cost_scaling_factor = drive.cost_scaling_factor;
+  p.penalty = drive.penalty;
+  p.reward.c = c;
+  p.reward.c_time = c_time;
+  p.reward.g = g;
+  p.reward.h = h;
+  p.reward.safety = safety;
+  p.reward.safety_per_speed = safety_per_speed;
+  p.reward.sigma = sigma;
+  p.search.max_insertions = max_insertions;
+  p.search.v_max = drive.v_max;
+  p.search.v_min = std::min(p.search.v_min, drive.v_max);
+  return p;
+}
+
+WaypointControllerSettings PolicyNavigatorSettings::controller(const DriveSettings& drive) const {
+  return {d_approach, heading_gain, drive.goal_tolerance, drive.accel};
+}
+
+void record_execution(const Execution& e, bool stopped, core::RunRecord& r) {
+  r.status = e.arrived ? core::PlanStatus::kSolved : stopped ? core::PlanStatus::kTimeout : core::PlanStatus::kUnsolvable;
+  r.path_length = e.distance;
+  r.extra["arrived"] = e.arrived ? 1.0 : 0.0;
+  r.extra["execution_time_s"] = e.time_s;
+  r.extra["distance"] = e.distance;
+  r.extra["min_clearance"] = e.min_clearance;
+  r.extra["collisions"] = static_cast<double>(e.collisions);
+}
+
+NavigationOutcome PolicyNavigator::run(const NavTask& task, const core::StopCondition& stop, core::Rng& rng) {
+  drive_.validate();
+  policy_.validate();
+  const GridNavWorld& world = map_world(task, "policy-search");
+  NavigationOutcome out;
+  const auto t0 = std::chrono::steady_clock::now();
+  const PolicyPlan plan = plan_policy(world, task.start, task.goal, task.robot_radius, policy_.planner(drive_));
+  out.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Simulator sim = unicycle_simulator(task, drive_);
+  WaypointController controller(plan.search.final, policy_.controller(drive_));
+  const Execution e = execute(sim, controller, drive_.noise(), drive_.max_time, rng, &stop);
+  record_execution(e, stop.fired(), out.record);
+  out.record.nodes = plan.search.final.size();
+  out.record.extra["waypoints"] = static_cast<double>(plan.search.final.size());
+  out.record.extra["value"] = plan.search.value_final;
+  out.trace = e.trace;
+  out.speeds = e.speeds;
+  return out;
+}
+
+void register_policy_search(NavigatorRegistry& registry) {
+  std::vector<core::ParamSpec> specs = PolicyNavigatorSettings::schema().specs();
+  for (const core::ParamSpec& s : DriveSettings::schema().specs()) specs.push_back(s);
+  registry.add({"policy-search",
+                "policy search seeded by a value function: grid value iteration, 5-D waypoints optimised by gradient "
+                "ascent and insertion, driven on a noisy unicycle",
+                specs},
+               [](const core::Params& p) -> std::unique_ptr<Navigator> {
+                 return std::make_unique<PolicyNavigator>(DriveSettings::schema().read(p),
+                                                          PolicyNavigatorSettings::schema().read(p));
+               });
+}
+
+}  // namespace amp::nav

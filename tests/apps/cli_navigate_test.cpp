@@ -1,0 +1,70 @@
+// `amp navigate`: the record's keys, record.json, the same seed giving the same record; bad input
+// ends with exit code 1 and one line naming the option or the file.
+#include <filesystem>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_errors_fixture.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace amp::test;  // CliErrors, run helpers, kData, kExit*
+
+const char* const kKeys[] = {"method", "runs", "solved_runs", "collisions_total", "planning_time_median_s",
+                             "execution_time_median_s", "distance_median", "min_clearance_min", "waypoints"};
+
+TEST_F(CliErrors, NavigatePolicyOutOfTheLab) {
+  const std::string args = "navigate " + bundled("policy-lab.yaml") + " --runs 3 --seed 4 --json";
+  const RunResult r = run(args + " -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : kKeys) EXPECT_TRUE(j.contains(key)) << key;
+  for (const auto& [key, value] : j.items()) EXPECT_FALSE(value.is_object() || value.is_array()) << key << " is not flat";
+  EXPECT_EQ(j.at("method"), "policy-search");
+  EXPECT_EQ(j.at("runs"), 3);
+  EXPECT_EQ(j.at("solved_runs"), 3);  // the searched policy leaves the lab on the noisy robot
+  EXPECT_GE(j.at("min_clearance_min").get<double>(), 0.0);  // never through a wall
+  EXPECT_GE(j.at("waypoints").get<double>(), 2.0);
+  EXPECT_GT(j.at("distance_median").get<double>(), 5.0);  // longer than the straight 5 m through the wall
+  const nlohmann::json record = nlohmann::json::parse(read_file(dir_ / "out" / "record.json"));
+  ASSERT_EQ(record.at("run_details").size(), 3u);
+  for (const auto& run : record.at("run_details")) EXPECT_FALSE(run.at("speeds").empty());
+  // Same seed, same record (planning time aside); an existing record.json is kept without --force.
+  nlohmann::json again = nlohmann::json::parse(run(args).out), first = j;
+  again.erase("planning_time_median_s");
+  first.erase("planning_time_median_s");
+  EXPECT_EQ(again, first);
+  const RunResult kept = run(args + " -o out");
+  EXPECT_EQ(kept.exit_code, kExitError);
+  EXPECT_THAT(kept.err, ::testing::HasSubstr("record.json"));
+}
+
+TEST_F(CliErrors, NavigateDwaRunsOnTheSameProblem) {
+  const RunResult r = run("navigate " + bundled("policy-lab.yaml") + " --method dwa --runs 1 --json --param max_time=20");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("method"), "dwa");
+  EXPECT_EQ(j.at("waypoints"), 0.0);
+  EXPECT_LE(j.at("execution_time_median_s").get<double>(), 20.0 + 1e-9);
+  EXPECT_GE(j.at("min_clearance_min").get<double>(), 0.0);
+}
+
+TEST_F(CliErrors, NavigateBadInput) {
+  const std::string lab = bundled("policy-lab.yaml");
+  expect_input_error(run("navigate " + lab + " --runs 0"), {"--runs"});
+  expect_input_error(run("navigate " + lab + " --method teleport"), {"--method"});
+  expect_input_error(run("navigate " + lab + " --param d_approach=0"), {"d_approach"});
+  expect_input_error(run("navigate " + lab + " --param sigma_v=-1"), {"sigma_v"});
+  expect_input_error(run("navigate " + lab + " --param v_max=0"), {"v_max"});
+  expect_input_error(run("navigate " + lab + " --param accel=-2"), {"accel"});
+  expect_input_error(run("navigate " + data("lab_wide_robot.yaml")), {"no passage wide enough for the footprint"});
+  expect_input_error(run("navigate " + data("goal_in_collision.yaml")), {"goal_in_collision.yaml", "goal"});
+  expect_input_error(run("navigate " + data("ok.yaml")), {"map worlds"});
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+}  // namespace
