@@ -15,6 +15,7 @@
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
 #include "explore_run.hpp"
+#include "navigate_run.hpp"
 #include "region_output.hpp"
 #include "commands.hpp"
 
@@ -34,6 +35,7 @@ constexpr std::size_t kMaxDrawnRoadmapNodes = 2000;
 // the corridor (coverage 0.4, no query solved); 20,000 reach most rooms (coverage 0.8).
 constexpr long kDemoExploreSteps = 20000;
 constexpr int kDemoExploreQueries = 3;
+constexpr int kDemoNavigateRuns = 10;  // per method, out of the lab (about a second each)
 
 struct DemoOptions {
   std::string out = "out/demo";
@@ -71,6 +73,19 @@ void run_demo_explore(const std::filesystem::path& file, const std::filesystem::
   std::printf("%s", format_explore_table(r.record).c_str());
   write_explore_outputs(office, r, out_dir);
   std::printf("pictures: %s/figure1.svg, curves.svg, queries.svg (and record.json)\n", out_dir.string().c_str());
+}
+
+// `amp navigate` reduced: policy search and DWA out of the paper's lab, a few noisy runs each.
+void run_demo_navigate(const std::filesystem::path& file, const std::filesystem::path& out_dir, std::uint64_t seed) {
+  const world::Problem lab = world::load_problem(file);
+  NavigateSetup setup;
+  setup.runs = kDemoNavigateRuns;
+  setup.seed = seed;
+  std::printf("\nPolicy search against DWA out of the paper's lab (54 cm robot, 60 cm door):\n");
+  const NavigateResult r = run_both_methods(lab, setup);
+  std::printf("%s", format_table2(r, setup).c_str());
+  write_navigate_outputs(lab, r, kPolicyMethod, setup, out_dir);
+  std::printf("pictures: %s/phases.svg, velocity.svg (and record.json)\n", out_dir.string().c_str());
 }
 
 int run_demo(const DemoOptions& o) {
@@ -147,6 +162,7 @@ int run_demo(const DemoOptions& o) {
   run_demo_bench(dir / "experiments" / "run-cost-variance-quick.yaml", out / "run-cost-variance", 0);
 
   run_demo_explore(dir / "office-map.yaml", out / "explore", o.seed);
+  run_demo_navigate(dir / "policy-lab.yaml", out / "navigate", o.seed);
   return failures == 0 ? kExitOk : kExitNotSolved;
 }
 

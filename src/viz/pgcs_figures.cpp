@@ -6,6 +6,7 @@
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/viz/svg_canvas.hpp"
 #include "amp/viz/world_layer.hpp"
+#include "figure_legend.hpp"
 
 namespace amp::viz {
 
@@ -76,22 +77,6 @@ void draw_start(SvgCanvas& c, const PgcsDrawing& d) {
   c.circle(d.start, d.robot_radius, Style{kStartColor, "#0f5c45", 1.2, 0.8});
 }
 
-// Legend items left to right along the footer.
-class Legend {
- public:
-  explicit Legend(SvgCanvas& c) : c_(c), y_(c.height_px() - kFooterPx / 2.0) {}
-  void item(const char* color, const std::string& label, double opacity = 0.8) {
-    c_.rect_px(x_, y_ - 9, 14, 14, Style{color, "none", 0, opacity});
-    c_.text_px(x_ + 20, y_ + 3, label, 13, kText);
-    x_ += 30 + 7.5 * static_cast<double>(label.size());
-  }
-
- private:
-  SvgCanvas& c_;
-  double x_ = kMarginPx;
-  double y_;
-};
-
 }  // namespace
 
 std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d, const std::string& title) {
@@ -128,7 +113,7 @@ std::string pgcs_figure1_svg(const world::Problem& problem, const PgcsDrawing& d
   char caption[160];
   std::snprintf(caption, sizeof caption, "%zu clusters after %ld steps (circles: radius sigma)", d.clusters.size(),
                 d.steps);
-  Legend legend(c);
+  FigureLegend legend(c, c.height_px() - kFooterPx / 2.0, kMarginPx, kText);
   legend.item(kClusterColor, caption, 0.4);
   legend.item(kLegalEdge, "legal edges: " + std::to_string(d.legal_edges.size()));
   legend.item(kIllegalEdge, "illegal edges (dashed): " + std::to_string(d.illegal_edges.size()));
@@ -169,7 +154,7 @@ std::string pgcs_queries_svg(const world::Problem& problem, const PgcsDrawing& d
     }
   }
   c.end_group();
-  Legend legend(c);
+  FigureLegend legend(c, c.height_px() - kFooterPx / 2.0, kMarginPx, kText);
   legend.item(kStartColor, "query start");
   legend.item(kTargetColor, "target");
   legend.item(cluster_color(0),

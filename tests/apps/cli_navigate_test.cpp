@@ -18,7 +18,7 @@ const char* const kKeys[] = {"method", "runs", "solved_runs", "collisions_total"
                              "execution_time_median_s", "distance_median", "min_clearance_min", "waypoints"};
 
 TEST_F(CliErrors, NavigatePolicyOutOfTheLab) {
-  const std::string args = "navigate " + bundled("policy-lab.yaml") + " --runs 3 --seed 4 --json";
+  const std::string args = "navigate " + bundled("policy-lab.yaml") + " --runs 3 --seed 4 --json --param max_time=60";
   const RunResult r = run(args + " -o out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -33,6 +33,24 @@ TEST_F(CliErrors, NavigatePolicyOutOfTheLab) {
   const nlohmann::json record = nlohmann::json::parse(read_file(dir_ / "out" / "record.json"));
   ASSERT_EQ(record.at("run_details").size(), 3u);
   for (const auto& run : record.at("run_details")) EXPECT_FALSE(run.at("speeds").empty());
+  // Table 2 has both methods on the same seeds; the chosen one's row is the printed record.
+  ASSERT_EQ(record.at("table2").size(), 2u);
+  EXPECT_EQ(record.at("table2")[0].at("method"), "policy-search");
+  EXPECT_EQ(record.at("table2")[1].at("method"), "dwa");
+  EXPECT_EQ(record.at("table2")[0].at("solved_runs"), j.at("solved_runs"));
+  EXPECT_EQ(record.at("table2")[1].at("runs"), 3);
+  // Figure 3: four phases over the map; Figure 4: one velocity line per method.
+  const std::string phases = read_file(dir_ / "out" / "phases.svg");
+  std::size_t panels = 0;
+  for (auto at = phases.find("class=\"phase\""); at != std::string::npos; at = phases.find("class=\"phase\"", at + 1)) ++panels;
+  EXPECT_EQ(panels, 4u);
+  for (const char* phase : {"(a) value iteration path", "(b) projected waypoints", "(c) after policy search",
+                            "(d) after insertions"}) {
+    EXPECT_THAT(phases, ::testing::HasSubstr(phase));
+  }
+  const std::string velocity = read_file(dir_ / "out" / "velocity.svg");
+  EXPECT_THAT(velocity, ::testing::HasSubstr("policy search"));
+  EXPECT_THAT(velocity, ::testing::HasSubstr("DWA"));
   // Same seed, same record (planning time aside); an existing record.json is kept without --force.
   nlohmann::json again = nlohmann::json::parse(run(args).out), first = j;
   again.erase("planning_time_median_s");
@@ -41,6 +59,15 @@ TEST_F(CliErrors, NavigatePolicyOutOfTheLab) {
   const RunResult kept = run(args + " -o out");
   EXPECT_EQ(kept.exit_code, kExitError);
   EXPECT_THAT(kept.err, ::testing::HasSubstr("record.json"));
+}
+
+TEST_F(CliErrors, NavigatePrintsTable2ForBothMethods) {
+  // A policy-search parameter is not an error for DWA, which runs beside it on the same seeds.
+  const RunResult r = run("navigate " + bundled("policy-lab.yaml") + " --runs 1 --param max_time=30 --param d_approach=0.25");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("Table 2"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("policy-search +1/1"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("  dwa +[01]/1"));
 }
 
 TEST_F(CliErrors, NavigateDwaRunsOnTheSameProblem) {

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -13,6 +15,15 @@ class StopCondition;
 
 namespace amp::nav {
 
+// A stage of a method's plan before it drives, for pictures: policy search's value-function path,
+// then its waypoints after each step of Table 1 (the policy-search paper's Figure 3).
+struct PlanStage {
+  std::string name;
+  std::vector<Eigen::Vector2d> points;
+  bool waypoints = true;         // the points are waypoints (not a cell path)
+  std::optional<double> value;   // the plan's value at this stage, where the method has one
+};
+
 // What one navigation run reports: the flat record `amp bench` writes (status, path_length,
 // wall_time_s, and the method's metrics in `extra`), and the robot's driven trace.
 struct NavigationOutcome {
@@ -20,6 +31,7 @@ struct NavigationOutcome {
   std::vector<Eigen::Vector2d> trace;
   std::vector<double> speeds;    // per step, when the method drives a controller (the velocity profile)
   double planning_time_s = 0.0;  // measured, so outside the record (which depends on the seed alone)
+  std::vector<PlanStage> stages;  // empty for methods that do not plan ahead
 };
 
 // A navigation method (PGCS exploration and queries, policy search, DWA, SINS): it drives a

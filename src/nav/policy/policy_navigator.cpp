@@ -75,6 +75,15 @@ NavigationOutcome PolicyNavigator::run(const NavTask& task, const core::StopCond
   out.record.extra["value"] = plan.search.value_final;
   out.trace = e.trace;
   out.speeds = e.speeds;
+  const auto positions = [](const std::vector<State>& w) {
+    std::vector<Eigen::Vector2d> p;
+    for (const State& s : w) p.emplace_back(s[0], s[1]);
+    return p;
+  };
+  out.stages = {{"(a) value iteration path", plan.dp_path, false, std::nullopt},
+                {"(b) projected waypoints", positions(plan.search.projected), true, plan.search.value_projected},
+                {"(c) after policy search", positions(plan.search.searched), true, plan.search.value_searched},
+                {"(d) after insertions", positions(plan.search.final), true, plan.search.value_final}};
   return out;
 }
 

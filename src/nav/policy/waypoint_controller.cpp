@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "amp/core/error.hpp"
@@ -33,21 +34,55 @@ Eigen::Vector2d xy(const State& w) { return {w[0], w[1]}; }
 }  // namespace
 
 Eigen::Vector2d WaypointController::command(const RobotState& s) {
-  while (current_ + 1 < waypoints_.size() && (s.position - xy(waypoints_[current_])).norm() < settings_.d_approach) {
+  // A retreat ends at the passed waypoint itself (not within d_approach of it), so that the robot
+  // sets off again from where the policy's segment begins.
+  if (retreating_ && (s.position - xy(waypoints_[current_ - 1])).norm() < settings_.goal_tolerance) retreating_ = false;
+  while (!retreating_ && current_ + 1 < waypoints_.size() &&
+         (s.position - xy(waypoints_[current_])).norm() < settings_.d_approach) {
     ++current_;
   }
+  if (retreating_) {
+    const State& back = waypoints_[current_ - 1];
+    return steer(s, xy(back), back[3], (xy(back) - s.position).norm());
+  }
   const State& w = waypoints_[current_];
-  const Eigen::Vector2d to = xy(w) - s.position;
-  const double dist = to.norm();
   const bool last = current_ + 1 == waypoints_.size();
-  if (last && dist < settings_.goal_tolerance) return Eigen::Vector2d::Zero();
+  const double to_w = (xy(w) - s.position).norm();
+  if (last && to_w < settings_.goal_tolerance) return Eigen::Vector2d::Zero();
+  const double brake = last ? to_w : std::numeric_limits<double>::infinity();
+  if (current_ == 0) return steer(s, xy(w), w[3], brake);
+  // On a segment: the speed the policy's value assumed at the robot's progress (PolicyValue
+  // interpolates it between the waypoints' speeds), and the aim d_approach further along the
+  // segment (pure pursuit), so that the robot converges onto the segment the search scored: a
+  // door's segment is lined up with the door, where pointing at w_j alone would enter it askew.
+  const State& from = waypoints_[current_ - 1];
+  const Eigen::Vector2d seg = xy(w) - xy(from);
+  const double len = seg.norm();
+  if (len == 0.0) return steer(s, xy(w), w[3], brake);
+  const double t = std::clamp((s.position - xy(from)).dot(seg) / (len * len), 0.0, 1.0);
+  const Eigen::Vector2d aim = xy(from) + std::min(1.0, t + settings_.d_approach / len) * seg;
+  return steer(s, aim, from[3] + t * (w[3] - from[3]), brake);
+}
+
+Eigen::Vector2d WaypointController::steer(const RobotState& s, const Eigen::Vector2d& aim, double v_ref,
+                                          double brake_distance) const {
+  const Eigen::Vector2d to = aim - s.position;
   const double e = core::angle_difference(s.heading, std::atan2(to.y(), to.x()));
-  double v = w[3] * std::max(0.0, std::cos(e));
-  if (last) v = std::min(v, std::sqrt(2.0 * settings_.accel * dist));
+  double v = v_ref * std::max(0.0, std::cos(e));
+  v = std::min(v, std::sqrt(2.0 * settings_.accel * brake_distance));
   return {v, settings_.heading_gain * e};
 }
 
-Eigen::Vector2d WaypointController::command(const Simulator& sim) { return command(sim.state()); }
+Eigen::Vector2d WaypointController::command(const Simulator& sim) {
+  // A refused move means the footprint touched an obstacle (a door frame, under noise): pushing on
+  // would pin it there, so go back to the waypoint already passed, in free space, and try again
+  // (a retreat, like Nav2's back-up recovery, for a robot that cannot reverse).
+  if (sim.blocked_moves() > blocked_seen_) {
+    blocked_seen_ = sim.blocked_moves();
+    if (current_ > 0 && !retreating_) retreating_ = true;
+  }
+  return command(sim.state());
+}
 
 bool WaypointController::arrived(const RobotState& s) const {
   return (s.position - xy(waypoints_.back())).norm() < settings_.goal_tolerance;

@@ -46,11 +46,12 @@ TEST(WaypointController, SteersTowardTheWaypointByHand) {
 
 TEST(WaypointController, SwitchesWithinDApproachAndStopsAtTheGoal) {
   WaypointController c({waypoint(1, 0, 0.2), waypoint(1, 1, 0.2)});
-  // 0.25 m from the first waypoint (d_approach 0.3): on to the second, which is the last, 1 m away
-  // at bearing atan2(1, 0.25); v is also capped by sqrt(2 * 2.5 * d).
+  // 0.25 m from the first waypoint (d_approach 0.3): on to the second, which is the last. The robot
+  // projects onto the segment's start (t = 0), so it aims d_approach along the segment, at (1, 0.3):
+  // bearing atan2(0.3, 0.25) from (0.75, 0). The brake cap sqrt(2 * 2.5 * 1.03) is far above 0.2.
   const V cmd = c.command(at(0.75, 0.0, 0.0));
   EXPECT_EQ(c.current(), 1u);
-  const double e = std::atan2(1.0, 0.25);
+  const double e = std::atan2(0.3, 0.25);
   EXPECT_NEAR(cmd.x(), 0.2 * std::cos(e), 1e-12);
   EXPECT_NEAR(cmd.y(), 2.5 * e, 1e-12);
   // 0.2 m from the goal: v <= sqrt(2 * 2.5 * 0.2) = 1, so the waypoint's 0.2 rules; braking at
@@ -89,6 +90,44 @@ TEST(WaypointController, DrivesAUnicycleRoundACornerInTheSimulator) {
   // About 6 m at 0.26 m/s (with the corners cut by d_approach and turns on the spot): 20-40 s.
   EXPECT_GT(steps, 200u);
   EXPECT_LT(steps, 400u);
+}
+
+TEST(WaypointController, DrivesTheSpeedThePolicyValueAssumedAlongTheSegment) {
+  // PolicyValue interpolates the speed between the waypoints; so does the controller. Past the
+  // first waypoint (within d_approach of it), at 10% of the segment: 0.1 + 0.1 (0.2 - 0.1) = 0.11;
+  // at 60% (still 0.4 m from the second waypoint): 0.16.
+  WaypointController c({waypoint(0, 0, 0.1), waypoint(1, 0, 0.2), waypoint(2, 0, 0.2)});
+  EXPECT_NEAR(c.command(at(0.1, 0, 0.0)).x(), 0.11, 1e-12);
+  EXPECT_EQ(c.current(), 1u);
+  EXPECT_NEAR(c.command(at(0.6, 0, 0.0)).x(), 0.16, 1e-12);
+}
+
+TEST(WaypointController, RetreatsToThePassedWaypointAfterAContact) {
+  // A wall across the way at x = 1.0: the robot (radius 0.27) drives into it, the simulator refuses
+  // the move, and the controller goes back to the waypoint it passed (0.3, 1) before trying again.
+  world::Shapes2d s;
+  s.polygons.push_back({{{1.0, 0.0}, {1.1, 0.0}, {1.1, 2.0}, {1.0, 2.0}}});
+  const auto world = std::make_shared<const PolygonNavWorld>(s, Eigen::AlignedBox2d(V(0, 0), V(2, 2)));
+  const auto timeline = std::make_shared<const WorldTimeline>(world, std::vector<WorldEvent>{});
+  const auto robot = std::make_shared<const UnicycleDisc>();
+  Simulator sim(timeline, robot, at(0.3, 1.0, 0.0));
+  WaypointController c({waypoint(0.3, 1.0, 0.2), waypoint(1.6, 1.0, 0.2)});
+  core::Rng rng(1);
+  std::size_t steps = 0;
+  while (!c.retreating() && steps < 200) {
+    sim.step(c.command(sim), rng);
+    ++steps;
+  }
+  ASSERT_TRUE(c.retreating());
+  EXPECT_GE(sim.blocked_moves(), 1u);
+  EXPECT_LE(sim.state().position.x(), 1.0 - 0.27 + 1e-9);  // never into the wall
+  while (c.retreating() && steps < 600) {
+    sim.step(c.command(sim), rng);
+    ++steps;
+  }
+  EXPECT_FALSE(c.retreating());
+  EXPECT_LT((sim.state().position - V(0.3, 1.0)).norm(), 0.1);  // back where the segment begins
+  EXPECT_EQ(c.current(), 1u);  // and on toward the next waypoint again
 }
 
 TEST(WaypointController, RefusesBadSettings) {

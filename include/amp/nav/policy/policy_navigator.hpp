@@ -12,7 +12,7 @@ struct PolicyNavigatorSettings {
   double d_approach = 0.3;     // m (eq. 3)
   double heading_gain = 2.5;   // 1/s
   double c = 1.0, c_time = 1.0, g = 100.0, h = 50.0;  // the reward (PolicyRewardSettings)
-  double safety = 0.05, safety_per_speed = 0.5, sigma = 0.03;
+  double safety = 0.05, safety_per_speed = 0.25, sigma = 0.03;
   int max_insertions = 30;
   static const core::SettingsSchema<PolicyNavigatorSettings>& schema();
   void validate() const { schema().validate(*this); }

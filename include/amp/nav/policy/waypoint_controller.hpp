@@ -20,12 +20,16 @@ struct WaypointControllerSettings {
 };
 
 // The local controller of a waypoint policy ("Policy search seeded by a value function", eqs. 2-3):
-// it steers toward the current waypoint w_j and switches to w_j+1 once ||s - w_j|| < d_approach.
-// Command (v, omega): omega = heading_gain * e, e the heading error toward w_j (wrapped to
-// [-pi, pi)), and v = v_j max(0, cos e) with v_j the waypoint's speed, so the robot turns on the
-// spot when w_j is behind it; toward the last waypoint v is also capped at sqrt(2 accel d) so that
-// it can stop there. Waypoints are 5-D (x, y, theta, v, omega; core::UnicycleSpace's layout);
-// their heading and turn rate are what the search shapes the path with, not set points.
+// it drives the segment w_j-1 -> w_j and switches to w_j+1 once ||s - w_j|| < d_approach (eq. 3).
+// Command (v, omega): omega = heading_gain * e, e the heading error (wrapped to [-pi, pi)) toward
+// the point d_approach ahead of the robot's projection on the segment (pure pursuit; w_0 itself
+// before the first switch), and v = v_ref max(0, cos e), so the robot turns on the spot when the
+// aim is behind it; v_ref is the speed PolicyValue assumed at that progress (linear between the two
+// waypoints' speeds). Toward the last waypoint v is also capped at sqrt(2 accel d) so that it can
+// stop there. Waypoints are 5-D (x, y, theta, v, omega; core::UnicycleSpace's layout); their
+// heading and turn rate are what the search shapes the path with, not set points. Driven on a
+// simulator, a refused move (the footprint touched an obstacle) sends it back to the waypoint
+// before the current one; within goal_tolerance of it, it resumes.
 class WaypointController final : public MotionController {
  public:
   // Throws ParameterError for bad settings or no waypoints.
@@ -35,16 +39,23 @@ class WaypointController final : public MotionController {
   // the last one is never passed).
   Eigen::Vector2d command(const RobotState& s);
   Eigen::Vector2d command(const Simulator& sim) override;
-  // Index of the waypoint steered to.
+  // Index of the waypoint steered to (the one after it while retreating).
   std::size_t current() const { return current_; }
+  // Going back to the waypoint before current() after the footprint touched an obstacle.
+  bool retreating() const { return retreating_; }
   // Within goal_tolerance of the last waypoint.
   bool arrived(const RobotState& s) const override;
   const std::vector<State>& waypoints() const { return waypoints_; }
 
  private:
+  // (v, omega) toward `aim` at up to v_ref, and slow enough to stop within brake_distance.
+  Eigen::Vector2d steer(const RobotState& s, const Eigen::Vector2d& aim, double v_ref, double brake_distance) const;
+
   std::vector<State> waypoints_;
   WaypointControllerSettings settings_;
   std::size_t current_ = 0;
+  bool retreating_ = false;
+  std::size_t blocked_seen_ = 0;  // the simulator's refused moves seen so far
 };
 
 }  // namespace amp::nav
