@@ -6,6 +6,10 @@ between four lower and three upper rooms, 0.9 m doors, desks, one unexplored (un
 rooms.map: a 64 x 64 MovingAI map: 4 x 4 rooms joined by 2-cell doors, with trees and water.
 lab.pgm/.yaml: the policy-search paper's lab, 100 x 120 cells at 0.05 m (5 m x 6 m): a 5 m x 4 m
 room with a desk and a table, a 10 cm wall with a 60 cm door, and a corridor above it.
+office-floor.pgm/.yaml: a larger office floor, 400 x 400 cells at 0.05 m (20 m x 20 m): two 1.5 m
+corridors joined by a hall at the east end, 11 rooms (four below, three between and four above the
+corridors), doors of 0.6 m to 0.9 m (the top-left room only through a 0.6 m door; the middle room
+and the bottom-left room have two doors each), desks and a conference table.
 """
 import random
 
@@ -137,7 +141,47 @@ def lab():
     write_map_server("lab", g)
 
 
+def office_floor():
+    w, h = 400, 400
+    g, fill = walled(w, h)
+    # Two corridors, y in [120, 149] and [260, 289] (1.5 m each), between 10 cm walls.
+    for y in (118, 150, 258, 290):
+        fill(2, y, w - 3, y + 1, OCC)
+    # Room walls: four rooms below, three rooms and the hall between, four rooms above the corridors.
+    for x in (100, 200, 300):
+        fill(x, 2, x + 1, 117, OCC)
+        fill(x, 292, x + 1, h - 3, OCC)
+    for x in (133, 266, 358):
+        fill(x, 152, x + 1, 257, OCC)
+    fill(360, 150, w - 3, 151, FREE)  # the hall x in [360, 397] joins the corridors at the east end
+    fill(360, 258, w - 3, 259, FREE)
+
+    def door_x(wall_y, centre, cells):  # a door in a horizontal wall, `cells` x 5 cm wide
+        fill(centre - cells // 2, wall_y, centre + (cells + 1) // 2 - 1, wall_y + 1, FREE)
+
+    def door_y(wall_x, centre, cells):  # a door in a vertical wall
+        fill(wall_x, centre - cells // 2, wall_x + 1, centre + (cells + 1) // 2 - 1, FREE)
+
+    for centre, cells in ((50, 18), (150, 16), (250, 18), (330, 14)):  # lower rooms: 0.9, 0.8, 0.9, 0.7 m
+        door_x(118, centre, cells)
+    door_y(100, 30, 16)                  # 0.8 m side door between the two lower-left rooms
+    door_x(150, 70, 18)                  # the left middle room: 0.9 m
+    door_x(150, 160, 16)                 # the middle room: 0.8 m to each corridor
+    door_x(258, 240, 16)
+    door_x(258, 310, 14)                 # the right middle room: 0.7 m
+    for centre, cells in ((50, 12), (150, 18), (250, 16), (350, 18)):  # upper rooms: 0.6, 0.9, 0.8, 0.9 m
+        door_x(290, centre, cells)
+    # Desks, and a 2 m conference table in the middle room that a path between its doors must round.
+    desks = [(20, 60, 60, 75), (120, 20, 135, 70), (230, 40, 270, 55), (360, 40, 385, 55),
+             (20, 180, 70, 200), (180, 185, 220, 225), (300, 200, 340, 215),
+             (40, 340, 80, 355), (220, 350, 280, 365), (330, 320, 345, 380)]
+    for d in desks:
+        fill(*d, OCC)
+    write_map_server("office-floor", g)
+
+
 if __name__ == "__main__":
     office()
     rooms()
     lab()
+    office_floor()

@@ -1,7 +1,11 @@
 #include "amp/nav/policy/policy_search.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "amp/core/error.hpp"
@@ -58,10 +62,39 @@ bool free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t 
          segment_free(value.world(), xy(w[j]), xy(w[j + 1]), value.radius());
 }
 
+// The steps at inner waypoints that last changed nothing, and what they read. A step at w_j reads
+// only the positions and speeds of w_j-1, w_j and w_j+1 (headings and turn rates enter neither the
+// value, nor eq. 11, nor the free-segment test), so from bit-identical inputs it would again change
+// nothing: it is skipped. Most waypoints settle after a few sweeps while their neighbours still move.
+class SettledSteps {
+ public:
+  explicit SettledSteps(std::size_t waypoints) : inputs_(waypoints) {}
+  bool holds(const std::vector<State>& w, std::size_t j) const { return inputs_[j] && *inputs_[j] == read(w, j); }
+  void record(const std::vector<State>& w, std::size_t j) { inputs_[j] = read(w, j); }
+  void forget(std::size_t j) { inputs_[j].reset(); }
+  // A waypoint inserted at index j: the steps after it move up by one.
+  void insert(std::size_t j) { inputs_.insert(inputs_.begin() + static_cast<std::ptrdiff_t>(j), std::nullopt); }
+
+ private:
+  using Inputs = std::array<std::uint64_t, 9>;  // x, y, v of w_j-1, w_j, w_j+1, bit for bit
+  static Inputs read(const std::vector<State>& w, std::size_t j) {
+    Inputs in{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const State& u = w[j - 1 + k];
+      in[3 * k] = std::bit_cast<std::uint64_t>(u[0]);
+      in[3 * k + 1] = std::bit_cast<std::uint64_t>(u[1]);
+      in[3 * k + 2] = std::bit_cast<std::uint64_t>(u[3]);
+    }
+    return in;
+  }
+  std::vector<std::optional<Inputs>> inputs_;
+};
+
 // One sweep of Table 1, step 3; returns the value gained.
-double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s) {
+double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s, SettledSteps& settled) {
   double gained = 0.0;
   for (std::size_t j = 1; j + 1 < w.size(); ++j) {
+    if (settled.holds(w, j)) continue;
     const double before = value.segments(w, j - 1, j + 1);
     double best = before;
     // Eq. 11: toward both neighbours, away from the nearest obstacle point.
@@ -90,16 +123,21 @@ double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearch
       }
       w[j][3] = old;
     }
-    gained += best - before;
+    if (best > before) {
+      gained += best - before;
+      settled.forget(j);
+    } else {
+      settled.record(w, j);  // w_j is as it was
+    }
   }
   return gained;
 }
 
-int search(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s) {
+int search(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s, SettledSteps& settled) {
   int sweeps = 0;
   while (sweeps < s.max_sweeps) {
     ++sweeps;
-    const double gained = sweep(w, value, s);
+    const double gained = sweep(w, value, s, settled);
     face_along(w);
     if (gained < s.tolerance) break;
   }
@@ -116,7 +154,8 @@ PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& 
   out.projected = initial;
   out.value_projected = value.total(initial);
   std::vector<State> w = std::move(initial);
-  out.sweeps += search(w, value, settings);
+  SettledSteps settled(w.size());
+  out.sweeps += search(w, value, settings, settled);
   out.searched = w;
   out.value_searched = value.total(w);
   double current = out.value_searched;
@@ -140,7 +179,8 @@ PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& 
     inserted[1] = pick.point.y();
     inserted[3] = pick.v;
     trial.insert(trial.begin() + static_cast<std::ptrdiff_t>(at) + 1, inserted);
-    const int sweeps = search(trial, value, settings);
+    settled.insert(at + 1);  // a rejected trial ends the search, so `settled` need not go back
+    const int sweeps = search(trial, value, settings, settled);
     out.sweeps += sweeps;
     const double v = value.total(trial);
     if (!(v > current + settings.tolerance)) break;  // no insertion raises the value: done
