@@ -88,6 +88,7 @@ TEST_F(CliErrors, NavigateBadInput) {
   expect_input_error(run("navigate " + lab + " --param sigma_v=-1"), {"sigma_v"});
   expect_input_error(run("navigate " + lab + " --param v_max=0"), {"v_max"});
   expect_input_error(run("navigate " + lab + " --param accel=-2"), {"accel"});
+  expect_input_error(run("navigate " + lab + " --param d_aproach=0.2"), {"--param", "d_aproach"});  // neither method's
   expect_input_error(run("navigate " + data("lab_wide_robot.yaml")), {"no passage wide enough for the footprint"});
   expect_input_error(run("navigate " + data("goal_in_collision.yaml")), {"goal_in_collision.yaml", "goal"});
   expect_input_error(run("navigate " + data("ok.yaml")), {"map worlds"});
