@@ -23,9 +23,21 @@ const core::SettingsSchema<DriveSettings>& DriveSettings::schema() {
        core::real_field<S>("penalty", &S::penalty, 0, 1e4, "extra cost per length at the footprint"),
        core::real_field<S>("goal_tolerance", &S::goal_tolerance, 1e-6, 1e6, "m, arrived within this of the goal"),
        core::real_field<S>("time_step", &S::time_step, 1e-4, 10, "s, simulator and control period"),
-       core::real_field<S>("max_time", &S::max_time, 1e-3, 1e7, "s of simulated driving before a run gives up")});
+       core::real_field<S>("max_time", &S::max_time, 1e-3, 1e7, "s of simulated driving before a run gives up"),
+       core::real_field<S>("footprint_length", &S::footprint_length, 0, 100,
+                           "m: 0 drives the problem's disc; else a rectangle this long, as wide as the disc, checked at its heading")});
   return schema;
 }
+
+UnicycleDiscSettings DriveSettings::robot(double radius) const {
+  if (footprint_length != 0.0 && footprint_length < 2.0 * radius) {
+    throw ParameterError("footprint_length must be 0 (the problem's disc) or at least the robot's width " +
+                         std::to_string(2.0 * radius) + " m, got " + std::to_string(footprint_length));
+  }
+  return {radius, 0.0, v_max, omega_max, accel, alpha, footprint_length};
+}
+
+Footprint DriveSettings::footprint(double radius) const { return UnicycleDisc(robot(radius)).footprint(); }
 
 const GridNavWorld& map_world(const NavTask& task, const char* method) {
   const auto* grid = dynamic_cast<const GridNavWorld*>(task.timeline->base().get());

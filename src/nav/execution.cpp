@@ -23,11 +23,11 @@ Execution execute(Simulator& sim, MotionController& controller, const MotionNois
                   core::Rng& rng, const core::StopCondition* stop) {
   noise.validate();
   Execution out;
-  const double r = sim.robot().radius();
   const std::size_t blocked0 = sim.blocked_moves();
   const double t0 = sim.time();
   out.trace.push_back(sim.state().position);
-  out.min_clearance = sim.next_world().clearance(sim.state().position, r);
+  const Footprint& f = sim.footprint();
+  out.min_clearance = f.clearance(sim.next_world(), sim.state().position, sim.state().heading);
   while (!controller.arrived(sim.state()) && sim.time() - t0 < time_limit_s) {
     if (stop != nullptr && (sim.step_count() & 63) == 0 && stop->time_up()) break;
     Eigen::Vector2d cmd = controller.command(sim);
@@ -37,7 +37,7 @@ Execution execute(Simulator& sim, MotionController& controller, const MotionNois
     out.distance += step.travelled;
     out.trace.push_back(sim.state().position);
     out.speeds.push_back(step.travelled / sim.time_step());
-    out.min_clearance = std::min(out.min_clearance, sim.world().clearance(sim.state().position, r));
+    out.min_clearance = std::min(out.min_clearance, f.clearance(sim.world(), sim.state().position, sim.state().heading));
   }
   out.arrived = controller.arrived(sim.state());
   out.time_s = sim.time() - t0;

@@ -25,7 +25,8 @@ Simulator::Simulator(std::shared_ptr<const WorldTimeline> timeline, std::shared_
       robot_(std::move(robot)),
       settings_(settings),
       sensors_(settings_.sensors),
-      state_(start) {
+      state_(start),
+      footprint_(robot_ ? robot_->footprint() : Footprint::disc(1.0)) {
   settings_.validate();
   if (!timeline_ || !robot_) throw ParameterError("simulator: no world or no robot");
   // A contact step of at most the radius never carries the disc across a wall of no thickness.
@@ -33,7 +34,7 @@ Simulator::Simulator(std::shared_ptr<const WorldTimeline> timeline, std::shared_
     throw ParameterError("simulator: contact_tolerance " + std::to_string(settings_.contact_tolerance) +
                          " must be smaller than the robot's radius " + std::to_string(robot_->radius()));
   }
-  if (!timeline_->at(0)->disc_free(state_.position, robot_->radius())) {
+  if (!footprint_.free(*timeline_->at(0), state_.position, state_.heading)) {
     throw ParameterError("simulator: the robot's start (" + std::to_string(state_.position.x()) + ", " +
                          std::to_string(state_.position.y()) + ") is in an obstacle or outside the world");
   }
@@ -41,7 +42,7 @@ Simulator::Simulator(std::shared_ptr<const WorldTimeline> timeline, std::shared_
 }
 
 void Simulator::place(const RobotState& s) {
-  if (!next_world().disc_free(s.position, robot_->radius())) {
+  if (!footprint_.free(next_world(), s.position, s.heading)) {
     throw ParameterError("simulator: the robot cannot be placed at (" + std::to_string(s.position.x()) + ", " +
                          std::to_string(s.position.y()) + "): in an obstacle or outside the world");
   }
@@ -57,7 +58,7 @@ StepResult Simulator::step(const Eigen::Vector2d& command, core::Rng& rng) {
   version_ = version;
   const NavWorld& w = *timeline_->at(steps_);
   const Eigen::Vector2d before = state_.position;
-  if (!w.disc_free(state_.position, robot_->radius())) {
+  if (!footprint_.free(w, state_.position, state_.heading)) {
     result.trapped = result.blocked = true;  // an obstacle appeared on the robot
     state_.velocity.setZero();
   } else {
@@ -72,9 +73,10 @@ StepResult Simulator::step(const Eigen::Vector2d& command, core::Rng& rng) {
 
 bool Simulator::move(const NavWorld& w, const Eigen::Vector2d& command) {
   const RobotModel& robot = *robot_;
-  const double r = robot.radius(), total = settings_.time_step, tol = settings_.contact_tolerance;
+  const double total = settings_.time_step, tol = settings_.contact_tolerance;
   const RobotState s0 = state_;
-  const double speed = robot.speed_bound(s0, command);
+  // Any disc of the footprint moves no faster than the centre plus its reach times the turn rate.
+  const double speed = robot.speed_bound(s0, command) + footprint_.centre_reach() * robot.turn_bound(s0, command);
   if (!(speed > 0.0)) {
     state_ = robot.propagate(s0, command, total);  // standing still: the pose cannot change
     state_.position = s0.position;
@@ -85,14 +87,17 @@ bool Simulator::move(const NavWorld& w, const Eigen::Vector2d& command) {
   RobotState current = s0, last_free = s0;
   double t = 0.0;
   for (int i = 0; i < settings_.max_advances; ++i) {
-    const double c = w.clearance(current.position, r);
-    if (c < 0.0 || !w.disc_free(current.position, r)) break;
+    const double c = footprint_.clearance(w, current.position, current.heading);
+    if (c < 0.0 || !footprint_.free(w, current.position, current.heading)) break;
     last_free = current;
     if (c < tol) {
       // In contact: one short step, kept only when it leaves the obstacle behind.
       const double h = std::min(total - t, tol / speed);
       const RobotState probe = robot.propagate(s0, command, t + h);
-      if (!w.disc_free(probe.position, r) || w.clearance(probe.position, r) <= c) break;
+      if (!footprint_.free(w, probe.position, probe.heading) ||
+          footprint_.clearance(w, probe.position, probe.heading) <= c) {
+        break;
+      }
       t += h;
       current = probe;
       if (t >= total) {
@@ -103,7 +108,7 @@ bool Simulator::move(const NavWorld& w, const Eigen::Vector2d& command) {
     }
     if (t + c / speed >= total) {
       const RobotState end = robot.propagate(s0, command, total);
-      if (!w.disc_free(end.position, r)) break;  // touching, up to rounding
+      if (!footprint_.free(w, end.position, end.heading)) break;  // touching, up to rounding
       state_ = end;
       return false;
     }

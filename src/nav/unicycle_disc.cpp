@@ -24,6 +24,10 @@ void UnicycleDiscSettings::validate() const {
   if (!(v_min <= 0.0) || !std::isfinite(v_min)) {
     throw ParameterError("unicycle: v_min must be <= 0 (0: no reversing), got " + std::to_string(v_min));
   }
+  if (length != 0.0 && !(length >= 2.0 * radius && std::isfinite(length))) {
+    throw ParameterError("unicycle: length must be 0 (a disc) or at least the width 2 radius = " +
+                         std::to_string(2.0 * radius) + ", got " + std::to_string(length));
+  }
 }
 
 UnicycleDisc::UnicycleDisc(UnicycleDiscSettings settings) : settings_(settings) { settings_.validate(); }
@@ -94,6 +98,16 @@ RobotState UnicycleDisc::propagate(const RobotState& s, const Eigen::Vector2d& c
 
 double UnicycleDisc::speed_bound(const RobotState& s, const Eigen::Vector2d& command) const {
   return std::max(std::abs(s.velocity.x()), std::abs(clipped(command).x()));
+}
+
+Footprint UnicycleDisc::footprint() const {
+  return settings_.length > 0.0 ? Footprint::rectangle(settings_.length, 2.0 * settings_.radius)
+                                : Footprint::disc(settings_.radius);
+}
+
+// omega ramps between its value now and the clipped command's, so neither is exceeded.
+double UnicycleDisc::turn_bound(const RobotState& s, const Eigen::Vector2d& command) const {
+  return std::max(std::abs(s.velocity.y()), std::abs(clipped(command).y()));
 }
 
 }  // namespace amp::nav

@@ -80,6 +80,16 @@ TEST_F(CliErrors, NavigateDwaRunsOnTheSameProblem) {
   EXPECT_GE(j.at("min_clearance_min").get<double>(), 0.0);
 }
 
+TEST_F(CliErrors, NavigateARectangularFootprintThroughTheLabDoor) {
+  // 0.7 m x 0.54 m, checked at its heading: it lines up with the 60 cm door and never touches it.
+  const RunResult r = run("navigate " + bundled("policy-lab.yaml") + " --runs 2 --json --param footprint_length=0.7 --param max_time=60");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("solved_runs"), 2);
+  EXPECT_EQ(j.at("collisions_total"), 0.0);
+  EXPECT_GE(j.at("min_clearance_min").get<double>(), 0.0);
+}
+
 TEST_F(CliErrors, NavigateBadInput) {
   const std::string lab = bundled("policy-lab.yaml");
   expect_input_error(run("navigate " + lab + " --runs 0"), {"--runs"});
@@ -88,6 +98,7 @@ TEST_F(CliErrors, NavigateBadInput) {
   expect_input_error(run("navigate " + lab + " --param sigma_v=-1"), {"sigma_v"});
   expect_input_error(run("navigate " + lab + " --param v_max=0"), {"v_max"});
   expect_input_error(run("navigate " + lab + " --param accel=-2"), {"accel"});
+  expect_input_error(run("navigate " + lab + " --param footprint_length=0.3"), {"footprint_length"});  // < 0.54 wide
   expect_input_error(run("navigate " + lab + " --param d_aproach=0.2"), {"--param", "d_aproach"});  // neither method's
   expect_input_error(run("navigate " + data("lab_wide_robot.yaml")), {"no passage wide enough for the footprint"});
   expect_input_error(run("navigate " + data("goal_in_collision.yaml")), {"goal_in_collision.yaml", "goal"});

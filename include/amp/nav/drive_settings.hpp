@@ -27,10 +27,15 @@ struct DriveSettings {
   double goal_tolerance = 0.1;     // m
   double time_step = 0.1;          // s, the simulator's and the controllers' period
   double max_time = 300.0;         // s of simulated driving before a run gives up
+  // m along the heading: 0 drives the problem's disc; else the footprint is a rectangle this long
+  // and as wide as the disc (a robot and its margin, as Nav2's `footprint` beside `robot_radius`).
+  double footprint_length = 0.0;
   static const core::SettingsSchema<DriveSettings>& schema();
   void validate() const { schema().validate(*this); }
 
-  UnicycleDiscSettings robot(double radius) const { return {radius, 0.0, v_max, omega_max, accel, alpha}; }
+  // Throw ParameterError naming footprint_length when it is neither 0 nor at least 2 radius.
+  UnicycleDiscSettings robot(double radius) const;
+  Footprint footprint(double radius) const;
   MotionNoise noise() const { return {sigma_v, sigma_omega}; }
 };
 

@@ -28,7 +28,7 @@ struct Execution {
   bool arrived = false;          // the controller says so and the robot is where it says
   double time_s = 0.0;           // simulated
   double distance = 0.0;         // travelled
-  double min_clearance = 0.0;    // of the robot's disc, over the run
+  double min_clearance = 0.0;    // of the robot's footprint, over the run
   std::size_t collisions = 0;    // moves the simulator cut short: footprint contacts
   std::vector<Eigen::Vector2d> trace;  // positions, one per step
   std::vector<double> speeds;          // distance per step / time step (the velocity profile)

@@ -1,6 +1,8 @@
 #pragma once
 #include <Eigen/Core>
 
+#include "amp/nav/footprint.hpp"
+
 namespace amp::nav {
 
 // What the simulator knows of a robot: its pose and the model's own velocity coordinates.
@@ -23,6 +25,10 @@ class RobotModel {
   // A bound on the centre's speed while propagate() runs from s under `command` (the conservative
   // advancement needs it); 0 when the robot stays put.
   virtual double speed_bound(const RobotState& s, const Eigen::Vector2d& command) const = 0;
+  // What collides: the disc of radius() unless the model says otherwise (a rectangle at the heading).
+  virtual Footprint footprint() const { return Footprint::disc(radius()); }
+  // A bound on |d heading / dt| over the same run, for a footprint whose discs are off the centre.
+  virtual double turn_bound(const RobotState&, const Eigen::Vector2d&) const { return 0.0; }
 };
 
 }  // namespace amp::nav

@@ -63,6 +63,7 @@ class Simulator {
   std::span<const double> ranges() const { return ranges_; }
   const NavWorld& world() const { return *timeline_->at(steps_ == 0 ? 0 : steps_ - 1); }
   const RobotModel& robot() const { return *robot_; }
+  const Footprint& footprint() const { return footprint_; }
   const RangeSensorRing& sensors() const { return sensors_; }
   std::size_t step_count() const { return steps_; }
   std::size_t blocked_moves() const { return blocked_; }
@@ -78,6 +79,7 @@ class Simulator {
   SimulatorSettings settings_;
   RangeSensorRing sensors_;
   RobotState state_;
+  Footprint footprint_;  // the robot's, fixed for the run
   std::vector<double> ranges_;
   std::size_t steps_ = 0;
   std::size_t blocked_ = 0;

@@ -13,8 +13,11 @@ struct UnicycleDiscSettings {
   double omega_max = 1.0;   // rad/s, either way
   double accel = 2.5;       // m/s^2, either way
   double alpha = 3.2;       // rad/s^2, either way
+  // m along the heading: 0 for the disc; else the footprint is a rectangle this long and 2 radius
+  // wide (Footprint::rectangle), checked at the robot's heading.
+  double length = 0.0;
   // Throws ParameterError naming the setting unless radius, v_max, omega_max, accel and alpha are
-  // > 0 and v_min <= 0, all finite.
+  // > 0 and v_min <= 0, all finite, and length is 0 or at least 2 radius.
   void validate() const;
 };
 
@@ -35,6 +38,8 @@ class UnicycleDisc final : public RobotModel {
   RobotState propagate(const RobotState& s, const Eigen::Vector2d& command, double t) const override;
   // The largest |v| over the ramp: the larger of |v| now and the clipped command's.
   double speed_bound(const RobotState& s, const Eigen::Vector2d& command) const override;
+  Footprint footprint() const override;
+  double turn_bound(const RobotState& s, const Eigen::Vector2d& command) const override;
 
  private:
   UnicycleDiscSettings settings_;

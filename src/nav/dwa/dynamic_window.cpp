@@ -68,7 +68,8 @@ Eigen::Vector2d DynamicWindow::descent(const Eigen::Vector2d& p) const {
 Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
   const RobotState& s = sim.state();
   const NavWorld& world = sim.next_world();
-  const double dt = sim.time_step(), r = robot_.radius;
+  const double dt = sim.time_step();
+  const Footprint& f = sim.footprint();
   const double v_lo = std::max(robot_.v_min, s.velocity.x() - robot_.accel * dt);
   const double v_hi = std::min(robot_.v_max, s.velocity.x() + robot_.accel * dt);
   const double w_lo = std::max(-robot_.omega_max, s.velocity.y() - robot_.alpha * dt);
@@ -77,7 +78,7 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
     double v, w, heading, clearance;
   };
   constexpr double kFirstCheck = 0.005;  // m
-  const double here = world.clearance(s.position, r);
+  const double here = f.clearance(world, s.position, s.heading);
   std::vector<Sample> admissible;
   admissible.reserve(static_cast<std::size_t>(settings_.v_samples * settings_.omega_samples));
   auto at = [](double lo, double hi, int i, int n) { return n == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * i / (n - 1); };
@@ -85,11 +86,13 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
     const double v = at(v_lo, v_hi, i, settings_.v_samples);
     for (int k = 0; k < settings_.omega_samples; ++k) {
       const double w = at(w_lo, w_hi, k, settings_.omega_samples);
-      // The arc, checked every `granularity` metres of travel (a disc's rotation sweeps nothing),
-      // and at its first kFirstCheck metres: a robot touching a wall may only take arcs that leave
-      // it (the simulator refuses moves that do not gain clearance in contact).
+      // The arc, checked at the footprint's heading every `granularity` metres that any of its
+      // discs travels (a disc's rotation sweeps nothing), and at its first kFirstCheck metres: a
+      // robot touching a wall may only take arcs that leave it (the simulator refuses moves that do
+      // not gain clearance in contact).
       const double length = std::abs(v) * settings_.sim_time;
-      const int n = std::max(1, static_cast<int>(std::ceil(length / settings_.granularity)));
+      const double swept = length + f.centre_reach() * std::abs(w) * settings_.sim_time;
+      const int n = std::max(1, static_cast<int>(std::ceil(swept / settings_.granularity)));
       auto pose = [&](double t, double& heading_out) {
         heading_out = s.heading + w * t;
         return Eigen::Vector2d(s.position + (std::abs(w) < 1e-9
@@ -103,11 +106,12 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
       bool free = true;
       if (length > 0.0 && here < kFirstCheck) {
         double h0 = 0.0;
-        free = world.clearance(pose(settings_.sim_time * std::min(1.0, kFirstCheck / length), h0), r) > here;
+        const Eigen::Vector2d first = pose(settings_.sim_time * std::min(1.0, kFirstCheck / length), h0);
+        free = f.clearance(world, first, h0) > here;
       }
       for (int j = 1; j <= n && free; ++j) {
         end = pose(settings_.sim_time * j / n, heading);
-        const double c = world.clearance(end, r);
+        const double c = f.clearance(world, end, heading);
         least = std::min(least, c);
         free = c > 0.0;
       }

@@ -1,5 +1,6 @@
 #include "amp/nav/policy/policy_planner.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "amp/core/error.hpp"
@@ -13,13 +14,29 @@ namespace {
 
 std::string point_text(const Eigen::Vector2d& p) { return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ")"; }
 
+std::string footprint_text(const Footprint& f) {
+  if (f.is_disc()) return "radius " + std::to_string(f.disc_radius());
+  return std::to_string(f.length()) + " m x " + std::to_string(f.width()) + " m";
+}
+
 }  // namespace
 
 PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal, double radius,
                        const PolicyPlannerSettings& settings) {
+  if (!(radius > 0.0) || !std::isfinite(radius)) {
+    throw ParameterError("the footprint's radius must be > 0, got " + std::to_string(radius));
+  }
+  return plan_policy(world, start, goal, Footprint::disc(radius), settings);
+}
+
+PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal,
+                       const Footprint& footprint, const PolicyPlannerSettings& settings) {
+  // Value iteration and the grid path treat the footprint as one of its discs, which any pose of it
+  // needs room for; the waypoints are then checked with the whole footprint at their headings.
+  const double radius = footprint.disc_radius();
   if (!world.disc_free(start, radius)) throw ParameterError("start " + point_text(start) + ": the robot's footprint is not free there");
   if (!world.disc_free(goal, radius)) throw ParameterError("goal " + point_text(goal) + ": the robot's footprint is not free there");
-  const PolicyValue value(world, radius, settings.reward);
+  const PolicyValue value(world, footprint, settings.reward);
   world::InflationSettings inflation;
   inflation.inscribed_radius = radius;
   inflation.inflation_radius = radius + settings.inflation;
@@ -49,7 +66,7 @@ PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, 
     const Eigen::Vector2i a = grid.world_to_cell(start), b = grid.world_to_cell(goal);
     point.compute(point.index(b.x(), b.y()));
     if (point.distance(point.index(a.x(), a.y())) < world::GridCostToGo::kUnreachable) {
-      throw ParameterError("no passage wide enough for the footprint (radius " + std::to_string(radius) +
+      throw ParameterError("no passage wide enough for the footprint (" + footprint_text(footprint) +
                            ") joins the start and the goal");
     }
     throw ParameterError("the goal " + point_text(goal) + " is not reachable from the start " + point_text(start));
@@ -58,7 +75,12 @@ PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, 
   const std::vector<int> cells = dp.path(from);
   for (int c : cells) plan.dp_path.push_back(grid.cell_center(c % grid.width(), c / grid.width()));
   const GridFrame frame{grid.width(), grid.resolution(), grid.origin()};
-  plan.search = search_policy(project_to_waypoints(cells, frame, start, goal, settings.search.v_max), value, settings.search);
+  std::vector<State> projected = project_to_waypoints(cells, frame, start, goal, settings.search.v_max);
+  if (!footprint.is_disc() && !policy_free(value, projected) && !straighten_turns(value, projected, grid.resolution())) {
+    throw ParameterError("no passage wide enough for the footprint (" + footprint_text(footprint) +
+                         ") at its heading: the grid path's turns or segments hit an obstacle");
+  }
+  plan.search = search_policy(std::move(projected), value, settings.search);
   return plan;
 }
 

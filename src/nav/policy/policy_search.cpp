@@ -5,10 +5,12 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <string>
 
 #include "amp/core/error.hpp"
+#include "amp/nav/footprint.hpp"
 #include "amp/nav/nav_world.hpp"
 
 namespace amp::nav {
@@ -56,19 +58,84 @@ void face_along(std::vector<State>& w) {
   }
 }
 
-// The two segments at inner waypoint j are free for the disc.
-bool free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t j) {
-  return segment_free(value.world(), xy(w[j - 1]), xy(w[j]), value.radius()) &&
-         segment_free(value.world(), xy(w[j]), xy(w[j + 1]), value.radius());
+double heading_of(const std::vector<State>& w, std::size_t k) {  // segment k: w_k -> w_k+1
+  const Eigen::Vector2d d = xy(w[k + 1]) - xy(w[k]);
+  return std::atan2(d.y(), d.x());
 }
+
+// Segment k driven at its heading: each disc of the footprint along its own parallel segment.
+bool segment_free_for(const PolicyValue& value, const std::vector<State>& w, std::size_t k) {
+  const Footprint& f = value.footprint();
+  if (f.is_disc()) return segment_free(value.world(), xy(w[k]), xy(w[k + 1]), value.radius());
+  const Eigen::Vector2d shift = xy(w[k + 1]) - xy(w[k]);
+  for (const Eigen::Vector2d& c : f.placed(xy(w[k]), heading_of(w, k))) {
+    if (!segment_free(value.world(), c, c + shift, value.radius())) return false;
+  }
+  return true;
+}
+
+// The turn in place at inner waypoint k, from segment k-1's heading to segment k's.
+bool turn_free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t k) {
+  const Footprint& f = value.footprint();
+  if (f.is_disc() || k == 0 || k + 1 >= w.size()) return true;
+  const double from = heading_of(w, k - 1);
+  return f.turn_free(value.world(), xy(w[k]), from, std::remainder(heading_of(w, k) - from, 2.0 * std::numbers::pi));
+}
+
+// Moving inner waypoint j keeps the footprint free: the two segments at w_j, and for a footprint
+// that is not a disc the turns at w_j-1, w_j and w_j+1, whose headings it changes.
+bool free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t j) {
+  return segment_free_for(value, w, j - 1) && segment_free_for(value, w, j) && turn_free_at(value, w, j - 1) &&
+         turn_free_at(value, w, j) && turn_free_at(value, w, j + 1);
+}
+
+}  // namespace
+
+bool policy_free(const PolicyValue& value, const std::vector<State>& w) {
+  for (std::size_t k = 0; k + 1 < w.size(); ++k) {
+    if (!segment_free_for(value, w, k) || !turn_free_at(value, w, k)) return false;
+  }
+  return true;
+}
+
+bool straighten_turns(const PolicyValue& value, std::vector<State>& w, double step) {
+  const double most = value.footprint().length() + value.footprint().width();
+  for (std::size_t k = 1; k + 1 < w.size(); ++k) {
+    if (turn_free_at(value, w, k)) continue;
+    // Turn further on (out of a door first), or sooner (lined up before entering one).
+    const Eigen::Vector2d on = (xy(w[k]) - xy(w[k - 1])).normalized(), back = (xy(w[k]) - xy(w[k + 1])).normalized();
+    const State original = w[k];
+    bool fixed = false;
+    for (double s = step; s <= most && !fixed; s += step) {
+      for (const Eigen::Vector2d& d : {on, back}) {
+        w[k][0] = original[0] + s * d.x();
+        w[k][1] = original[1] + s * d.y();
+        if (segment_free_for(value, w, k - 1) && segment_free_for(value, w, k) && turn_free_at(value, w, k - 1) &&
+            turn_free_at(value, w, k) && turn_free_at(value, w, k + 1)) {
+          fixed = true;
+          break;
+        }
+      }
+    }
+    if (!fixed) {
+      w[k] = original;
+      return false;
+    }
+  }
+  face_along(w);
+  return policy_free(value, w);
+}
+
+namespace {
 
 // The steps at inner waypoints that last changed nothing, and what they read. A step at w_j reads
 // only the positions and speeds of w_j-1, w_j and w_j+1 (headings and turn rates enter neither the
-// value, nor eq. 11, nor the free-segment test), so from bit-identical inputs it would again change
+// value, nor eq. 11, nor the free-segment test), and for a footprint that is not a disc also w_j-2
+// and w_j+2 (the turns at w_j-1 and w_j+1), so from bit-identical inputs it would again change
 // nothing: it is skipped. Most waypoints settle after a few sweeps while their neighbours still move.
 class SettledSteps {
  public:
-  explicit SettledSteps(std::size_t waypoints) : inputs_(waypoints) {}
+  SettledSteps(std::size_t waypoints, bool disc) : inputs_(waypoints), reach_(disc ? 1 : 2) {}
   bool holds(const std::vector<State>& w, std::size_t j) const { return inputs_[j] && *inputs_[j] == read(w, j); }
   void record(const std::vector<State>& w, std::size_t j) { inputs_[j] = read(w, j); }
   void forget(std::size_t j) { inputs_[j].reset(); }
@@ -76,18 +143,19 @@ class SettledSteps {
   void insert(std::size_t j) { inputs_.insert(inputs_.begin() + static_cast<std::ptrdiff_t>(j), std::nullopt); }
 
  private:
-  using Inputs = std::array<std::uint64_t, 9>;  // x, y, v of w_j-1, w_j, w_j+1, bit for bit
-  static Inputs read(const std::vector<State>& w, std::size_t j) {
+  using Inputs = std::array<std::uint64_t, 15>;  // x, y, v of w_j-2 .. w_j+2 (those in reach), bit for bit
+  Inputs read(const std::vector<State>& w, std::size_t j) const {
     Inputs in{};
-    for (std::size_t k = 0; k < 3; ++k) {
-      const State& u = w[j - 1 + k];
-      in[3 * k] = std::bit_cast<std::uint64_t>(u[0]);
-      in[3 * k + 1] = std::bit_cast<std::uint64_t>(u[1]);
-      in[3 * k + 2] = std::bit_cast<std::uint64_t>(u[3]);
+    const std::size_t lo = j >= reach_ ? j - reach_ : 0, hi = std::min(w.size() - 1, j + reach_);
+    for (std::size_t k = lo, at = 0; k <= hi; ++k, at += 3) {
+      in[at] = std::bit_cast<std::uint64_t>(w[k][0]);
+      in[at + 1] = std::bit_cast<std::uint64_t>(w[k][1]);
+      in[at + 2] = std::bit_cast<std::uint64_t>(w[k][3]);
     }
     return in;
   }
   std::vector<std::optional<Inputs>> inputs_;
+  std::size_t reach_;
 };
 
 // One sweep of Table 1, step 3; returns the value gained.
@@ -154,7 +222,7 @@ PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& 
   out.projected = initial;
   out.value_projected = value.total(initial);
   std::vector<State> w = std::move(initial);
-  SettledSteps settled(w.size());
+  SettledSteps settled(w.size(), value.footprint().is_disc());
   out.sweeps += search(w, value, settings, settled);
   out.searched = w;
   out.value_searched = value.total(w);

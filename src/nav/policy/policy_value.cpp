@@ -104,12 +104,21 @@ class PolicyValue::DistanceLattice {
   std::vector<std::unique_ptr<Node[]>> tiles_;
 };
 
-PolicyValue::PolicyValue(const NavWorld& world, double radius, PolicyRewardSettings settings)
-    : world_(&world), radius_(radius), settings_(settings) {
-  settings_.validate();
-  if (!(radius_ > 0.0) || !std::isfinite(radius_)) {
-    throw ParameterError("policy value: the footprint's radius must be > 0, got " + std::to_string(radius_));
+namespace {
+Footprint checked_disc(double radius) {
+  if (!(radius > 0.0) || !std::isfinite(radius)) {
+    throw ParameterError("policy value: the footprint's radius must be > 0, got " + std::to_string(radius));
   }
+  return Footprint::disc(radius);
+}
+}  // namespace
+
+PolicyValue::PolicyValue(const NavWorld& world, double radius, PolicyRewardSettings settings)
+    : PolicyValue(world, checked_disc(radius), settings) {}
+
+PolicyValue::PolicyValue(const NavWorld& world, const Footprint& footprint, PolicyRewardSettings settings)
+    : world_(&world), footprint_(footprint), radius_(footprint.disc_radius()), settings_(settings) {
+  settings_.validate();
   lattice_ = std::make_unique<DistanceLattice>(world, kLatticeSteps * settings_.step);
 }
 
@@ -140,15 +149,26 @@ double PolicyValue::reward_at(const Eigen::Vector2d& p, const Eigen::Vector2d& s
   const double offset = std::sqrt(3.0) * s.sigma;
   const double weights[3] = {2.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0};
   const double offsets[3] = {0.0, offset, -offset};
-  // All three sigma points at once, from the bounds carried along or else the nearest node's.
-  Side all = side_of(around, p, offset, range);
+  // Every disc of the footprint at all three sigma points at once (they lie within offset + reach
+  // of p), from the bounds carried along or else the nearest node's.
+  const double spread = offset + footprint_.centre_reach();
+  Side all = side_of(around, p, spread, range);
   if (all == Side::kUnknown) {
-    around = lattice_->bounds_near(p, radius_ + range + offset);
-    all = side_of(around, p, offset, range);
+    around = lattice_->bounds_near(p, radius_ + range + spread);
+    all = side_of(around, p, spread, range);
   }
+  // The footprint faces along the path: direction (side.y, -side.x).
+  const double heading = side.squaredNorm() > 0.0 ? std::atan2(-side.x(), side.y()) : 0.0;
+  auto footprint_within = [&](const Eigen::Vector2d& q) {
+    if (footprint_.is_disc()) return within_range(q, range);
+    for (const Eigen::Vector2d& c : footprint_.placed(q, heading)) {
+      if (within_range(c, range)) return true;
+    }
+    return false;
+  };
   double near = 0.0;
   for (int k = 0; k < 3; ++k) {
-    if (all == Side::kWithin || (all == Side::kUnknown && within_range(p + offsets[k] * side, range))) near += weights[k];
+    if (all == Side::kWithin || (all == Side::kUnknown && footprint_within(p + offsets[k] * side))) near += weights[k];
   }
   return -s.c - s.c_time / speed - s.h * near;
 }

@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "amp/core/error.hpp"
+#include "amp/nav/footprint.hpp"
 #include "amp/nav/grid_nav_world.hpp"
+#include "amp/nav/policy/policy_search.hpp"
+#include "amp/nav/policy/policy_value.hpp"
 #include "nav/lab_world.hpp"
 
 namespace amp::nav {
@@ -49,6 +52,33 @@ TEST(PolicyPlanner, OutOfTheLabThroughTheDoor) {
   const PolicyPlan again = plan_policy(*world, start, goal, 0.27);
   ASSERT_EQ(again.search.final.size(), r.final.size());
   for (std::size_t j = 0; j < r.final.size(); ++j) EXPECT_EQ(again.search.final[j], r.final[j]);
+}
+
+TEST(PolicyPlanner, ARectangleLinesUpWithTheDoorAtItsHeading) {
+  // 0.7 m x 0.54 m: it cannot turn in the door, so the plan drives through it straight, every
+  // segment and every turn in place certified for the whole footprint; one request, one plan.
+  const auto world = lab();
+  const Footprint f = Footprint::rectangle(0.7, 0.54);
+  // (The disc's goal, 0.5 m from the east wall, cannot be reached facing east by a 0.7 m body.)
+  const V start(1.0, 1.0), goal(3.0, 4.3);
+  const PolicyPlan plan = plan_policy(*world, start, goal, f);
+  const PolicySearchResult& r = plan.search;
+  ASSERT_GE(r.final.size(), 2u);
+  const PolicyValue value(*world, f);
+  for (const auto* w : {&r.projected, &r.searched, &r.final}) {
+    EXPECT_TRUE(policy_free(value, *w));
+    EXPECT_EQ(V(w->front()[0], w->front()[1]), start);
+    EXPECT_EQ(V(w->back()[0], w->back()[1]), goal);
+  }
+  EXPECT_GE(r.value_final, r.value_projected);
+  const PolicyPlan again = plan_policy(*world, start, goal, f);
+  EXPECT_EQ(again.search.final, r.final);
+  // The disc's own plan is free for the disc, not for the rectangle, which would turn in the door.
+  const PolicyPlan disc = plan_policy(*world, start, goal, 0.27);
+  EXPECT_TRUE(policy_free(PolicyValue(*world, 0.27), disc.search.final));
+  EXPECT_FALSE(policy_free(value, disc.search.projected));
+  // A rectangle too long to turn out of the corridor above the door (1.4 m deep) gets a clear error.
+  EXPECT_THROW(plan_policy(*world, start, goal, Footprint::rectangle(3.0, 0.54)), ParameterError);
 }
 
 TEST(PolicyPlanner, BadRequestsGetOneLineErrors) {

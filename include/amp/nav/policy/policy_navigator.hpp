@@ -17,6 +17,7 @@ struct PolicyNavigatorSettings {
   static const core::SettingsSchema<PolicyNavigatorSettings>& schema();
   void validate() const { schema().validate(*this); }
   PolicyPlannerSettings planner(const DriveSettings& drive) const;
+  // d_approach is at most goal_tolerance for a footprint that is not a disc (it turns in place).
   WaypointControllerSettings controller(const DriveSettings& drive) const;
 };
 

@@ -34,5 +34,10 @@ struct PolicyPlan {
 // cannot reach ("no passage wide enough for the footprint" when a point could), or bad settings.
 PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal, double radius,
                        const PolicyPlannerSettings& settings = {});
+// The same for any footprint, checked at the headings of the path: value iteration runs for one of
+// its discs, and a projected policy whose segments or turns in place the whole footprint cannot
+// drive is refused ("no passage wide enough for the footprint ... at its heading").
+PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal,
+                       const Footprint& footprint, const PolicyPlannerSettings& settings = {});
 
 }  // namespace amp::nav

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "amp/core/state.hpp"
+#include "amp/nav/footprint.hpp"
 
 namespace amp::nav {
 
@@ -37,13 +38,16 @@ struct PolicyRewardSettings {
 // and +-sqrt(3) sigma beside it, weights 2/3, 1/6, 1/6), so a policy has one value, without
 // sampling. The reward per metre at a pose is -c - c_time / v, and -h more when the disc footprint's
 // clearance there is below safety + safety_per_speed * v; reaching the goal adds g once. The
-// footprint is a disc of radius r, so the heading changes nothing yet but the path. It memoises
+// footprint faces along the path: a rectangle's clearance, and so the reward, depends on the
+// heading as well as on the speed (a disc's on the speed alone). It memoises
 // bounds on the world's distances as it is asked (the answers stay exact), so it is move-only and
 // one object is not for concurrent use.
 class PolicyValue {
  public:
   // Throws ParameterError for bad settings or radius <= 0.
   PolicyValue(const NavWorld& world, double radius, PolicyRewardSettings settings = {});
+  // A footprint checked at the heading of the path (a rectangle is lengthwise along it).
+  PolicyValue(const NavWorld& world, const Footprint& footprint, PolicyRewardSettings settings = {});
   ~PolicyValue();
   PolicyValue(PolicyValue&&) noexcept;
   PolicyValue& operator=(PolicyValue&&) noexcept;
@@ -63,7 +67,8 @@ class PolicyValue {
   Lowest lowest_on_segment(const std::vector<State>& w, std::size_t j) const;
 
   const PolicyRewardSettings& settings() const { return settings_; }
-  double radius() const { return radius_; }
+  double radius() const { return radius_; }  // the footprint's discs'
+  const Footprint& footprint() const { return footprint_; }
   const NavWorld& world() const { return *world_; }
 
  private:
@@ -85,6 +90,7 @@ class PolicyValue {
   double reward_at(const Eigen::Vector2d& p, const Eigen::Vector2d& side, double v, DistanceBounds& around) const;
 
   const NavWorld* world_;
+  Footprint footprint_;
   double radius_;
   PolicyRewardSettings settings_;
   // Bounds on the distance to the obstacles, filled as the value is asked for (policy_value.cpp).
