@@ -8,6 +8,7 @@
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/nav/drive_settings.hpp"
+#include "amp/nav/footprint.hpp"
 #include "amp/nav/nav_task.hpp"
 #include "amp/nav/navigator_catalog.hpp"
 #include "amp/stats/descriptive.hpp"
@@ -66,6 +67,8 @@ MethodRuns run_method(const world::Problem& problem, const std::string& method, 
     if (i == 0) {  // the figures show one run, as the paper's do
       m.stages = std::move(out.stages);
       m.speeds = std::move(out.speeds);
+      m.trace = std::move(out.trace);
+      m.arrived = arrived;
     }
   }
   m.record = {{"method", method},
@@ -82,13 +85,24 @@ MethodRuns run_method(const world::Problem& problem, const std::string& method, 
   return m;
 }
 
-viz::PolicyPhasesDrawing phases_drawing(const world::Problem& problem, const MethodRuns& policy) {
+// The drive settings policy search ran with (shared with DWA): the figures' footprint and time step.
+nav::DriveSettings drive_settings(const NavigateSetup& setup) {
+  const core::ParamMap drive = declared_params(kPolicyMethod, setup.params);
+  const auto& schema = nav::DriveSettings::schema();
+  return schema.read(core::Params(kPolicyMethod, schema.specs(), drive));
+}
+
+viz::PolicyPhasesDrawing phases_drawing(const world::Problem& problem, const MethodRuns& policy,
+                                        const nav::DriveSettings& drive) {
   viz::PolicyPhasesDrawing d;
   for (const nav::PlanStage& s : policy.stages) d.phases.push_back({s.name, s.points, s.waypoints, s.value});
   const nav::NavTask task = nav::make_nav_task(problem);
   d.start = task.start;
   d.goal = task.goal;
-  d.robot_radius = task.robot_radius;
+  const nav::Footprint footprint = drive.footprint(task.robot_radius);
+  d.footprint = {footprint.length(), footprint.width(), footprint.is_disc()};
+  d.trace = policy.trace;
+  d.arrived = policy.arrived;
   return d;
 }
 
@@ -135,14 +149,13 @@ void write_navigate_outputs(const world::Problem& problem, const NavigateResult&
   full["table2"] = nlohmann::json::array({r.policy.record, r.dwa.record});
   full["run_details"] = chosen.runs;
   viz::write_text_file((dir / "record.json").string(), full.dump(2) + "\n");
+  const nav::DriveSettings drive = drive_settings(setup);
   viz::write_text_file((dir / "phases.svg").string(),
-                       viz::policy_phases_svg(problem, phases_drawing(problem, r.policy),
+                       viz::policy_phases_svg(problem, phases_drawing(problem, r.policy, drive),
                                               problem.name + ": policy search, the phases of Table 1 (first seed)"));
-  const core::ParamMap drive = declared_params(kPolicyMethod, setup.params);
-  const double dt =
-      nav::DriveSettings::schema().read(core::Params(kPolicyMethod, nav::DriveSettings::schema().specs(), drive)).time_step;
   viz::write_text_file((dir / "velocity.svg").string(),
-                       viz::velocity_profiles_svg({{"policy search", r.policy.speeds}, {"DWA", r.dwa.speeds}}, dt,
+                       viz::velocity_profiles_svg({{"policy search", r.policy.speeds}, {"DWA", r.dwa.speeds}},
+                                                  drive.time_step,
                                                   problem.name + ": velocity profiles (first seed)"));
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include "amp/core/parameters.hpp"
@@ -24,12 +25,14 @@ struct NavigateSetup {
 };
 
 // One method over every seed: its flat record (a row of Table 2), each run's details, and the
-// first run's plan stages and velocity profile.
+// first run's plan stages, velocity profile and driven trace.
 struct MethodRuns {
   nlohmann::json record;
   nlohmann::json runs = nlohmann::json::array();
   std::vector<nav::PlanStage> stages;
   std::vector<double> speeds;
+  std::vector<Eigen::Vector2d> trace;
+  bool arrived = false;  // the first run's
 };
 
 struct NavigateResult {

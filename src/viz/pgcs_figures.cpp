@@ -7,6 +7,7 @@
 #include "amp/viz/svg_canvas.hpp"
 #include "amp/viz/world_layer.hpp"
 #include "figure_legend.hpp"
+#include "world_bounds.hpp"
 
 namespace amp::viz {
 
@@ -26,11 +27,6 @@ constexpr int kFooterPx = 44;
 constexpr double kPanelGap = 0.06;    // of the world's width, between Figure 1's two panels
 constexpr double kCrossPx = 4.5;      // half-size of a replan cross
 constexpr std::size_t kMaxTracePoints = 4000;  // the trace is thinned to this many (file size)
-
-Eigen::AlignedBox2d bounds_2d(const world::Problem& problem) {
-  const Eigen::AlignedBox3d b = problem.environment->workspace_bounds();
-  return {b.min().head<2>(), b.max().head<2>()};
-}
 
 void draw_world(SvgCanvas& c, const world::Problem& problem, const PgcsDrawing& d) {
   c.begin_group("workspace");

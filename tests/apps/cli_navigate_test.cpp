@@ -48,6 +48,8 @@ TEST_F(CliErrors, NavigatePolicyOutOfTheLab) {
                             "(d) after insertions"}) {
     EXPECT_THAT(phases, ::testing::HasSubstr(phase));
   }
+  EXPECT_THAT(phases, ::testing::HasSubstr("driven (first seed)"));  // the first run's trace, on the last panel
+  EXPECT_THAT(phases, ::testing::Not(::testing::HasSubstr(">stopped<")));  // it arrived
   const std::string velocity = read_file(dir_ / "out" / "velocity.svg");
   EXPECT_THAT(velocity, ::testing::HasSubstr("policy search"));
   EXPECT_THAT(velocity, ::testing::HasSubstr("DWA"));

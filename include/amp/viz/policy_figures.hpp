@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "amp/viz/footprint_outline.hpp"
 #include "amp/world/problem.hpp"
 
 namespace amp::viz {
@@ -23,11 +24,16 @@ struct PolicyPhase {
 struct PolicyPhasesDrawing {
   std::vector<PolicyPhase> phases;
   Eigen::Vector2d start = Eigen::Vector2d::Zero(), goal = Eigen::Vector2d::Zero();
-  double robot_radius = 0.0;  // the footprint drawn at the start and the goal
+  FootprintOutline footprint;  // the robot, drawn at the start, the goal and (a rectangle) each waypoint
+  std::vector<Eigen::Vector2d> trace;  // one run's driven positions, on the last panel; empty: none
+  bool arrived = true;                 // false: the trace ends where the run stopped, marked with a cross
 };
 
-// Figure 3: one panel per phase, two per row, each the map with the start, the goal and the
-// phase's path; waypoints as dots. Only the world's 2-D outline is drawn.
+// Figure 3: one panel per phase, two per row, each the map with the phase's path (waypoints as
+// dots) and the footprint at the start facing the goal (as the robot starts) and at the goal facing
+// along the path's last segment; a rectangle is also outlined at each waypoint, facing along the
+// segment it begins (how it crosses doors). The trace, if any, is drawn on the last panel. Captions
+// too long for a panel wrap onto two lines. Only the world's 2-D outline is drawn.
 std::string policy_phases_svg(const world::Problem& problem, const PolicyPhasesDrawing& drawing,
                               const std::string& title);
 

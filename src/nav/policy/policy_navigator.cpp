@@ -46,11 +46,16 @@ PolicyPlannerSettings PolicyNavigatorSettings::planner(const DriveSettings& driv
 }
 
 WaypointControllerSettings PolicyNavigatorSettings::controller(const DriveSettings& drive) const {
-  // A footprint that is not a disc was certified turning in place at the waypoints; switching from
-  // further away would cut the corner with its body (on the lab's door, 0.7 m x 0.54 m: 5 of 10
-  // runs arrived with d_approach 0.3, 10 of 10 without a contact with 0.1).
-  const double d = drive.footprint_length > 0.0 ? std::min(d_approach, drive.goal_tolerance) : d_approach;
-  return {d, heading_gain, drive.goal_tolerance, drive.accel};
+  WaypointControllerSettings c{d_approach, heading_gain, drive.goal_tolerance, drive.accel};
+  if (drive.footprint_length > 0.0) {
+    // A footprint that is not a disc was certified turning in place at the waypoints: it is driven
+    // so, stopping at each turn and switching there (not d_approach before, which swung its body
+    // into the lab's door frame: 5 of 10 runs arrived with d_approach 0.3, 10 of 10 with 0.1).
+    c.d_approach = std::min(d_approach, kRectangleSwitch);
+    c.lookahead = d_approach;
+    c.turn_in_place = kRectangleTurnInPlace;
+  }
+  return c;
 }
 
 void record_execution(const Execution& e, bool stopped, core::RunRecord& r) {
@@ -88,7 +93,7 @@ NavigationOutcome PolicyNavigator::run(const NavTask& task, const core::StopCond
   out.stages = {{"(a) value iteration path", plan.dp_path, false, std::nullopt},
                 {"(b) projected waypoints", positions(plan.search.projected), true, plan.search.value_projected},
                 {"(c) after policy search", positions(plan.search.searched), true, plan.search.value_searched},
-                {"(d) after insertions", positions(plan.search.final), true, plan.search.value_final}};
+                {plan.squared_crossings > 0 ? "(d) after insertions, passages squared" : "(d) after insertions", positions(plan.search.final), true, plan.search.value_final}};
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/nav/grid_nav_world.hpp"
+#include "amp/nav/policy/footprint_drive.hpp"
 #include "amp/nav/policy/waypoint_projection.hpp"
 #include "amp/world/grid_cost_to_go.hpp"
 
@@ -76,11 +77,19 @@ PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, 
   for (int c : cells) plan.dp_path.push_back(grid.cell_center(c % grid.width(), c / grid.width()));
   const GridFrame frame{grid.width(), grid.resolution(), grid.origin()};
   std::vector<State> projected = project_to_waypoints(cells, frame, start, goal, settings.search.v_max);
-  if (!footprint.is_disc() && !policy_free(value, projected) && !straighten_turns(value, projected, grid.resolution())) {
+  if (!footprint.is_disc() && !policy_free(value, projected) && !make_drivable(value, projected, grid.resolution())) {
+    if (!turn_drivable(value, projected, 0)) {
+      throw ParameterError("start " + point_text(start) + ": the footprint (" + footprint_text(footprint) +
+                           ") cannot turn there from facing the goal onto the path");
+    }
     throw ParameterError("no passage wide enough for the footprint (" + footprint_text(footprint) +
                          ") at its heading: the grid path's turns or segments hit an obstacle");
   }
   plan.search = search_policy(std::move(projected), value, settings.search);
+  if (!footprint.is_disc()) {
+    plan.squared_crossings = square_crossings(value, plan.search.final, grid.resolution());
+    if (plan.squared_crossings > 0) plan.search.value_final = value.total(plan.search.final);
+  }
   return plan;
 }
 

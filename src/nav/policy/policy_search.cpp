@@ -5,12 +5,12 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 #include <optional>
 #include <string>
 
 #include "amp/core/error.hpp"
 #include "amp/nav/footprint.hpp"
+#include "amp/nav/policy/footprint_drive.hpp"
 #include "amp/nav/nav_world.hpp"
 
 namespace amp::nav {
@@ -49,6 +49,15 @@ namespace {
 
 Eigen::Vector2d xy(const State& w) { return {w[0], w[1]}; }
 
+// Moving inner waypoint j keeps the footprint drivable: the two segments at w_j, and for a footprint
+// that is not a disc the turns at w_j-1, w_j and w_j+1, whose headings it changes.
+bool free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t j) {
+  return segment_drivable(value, w, j - 1) && segment_drivable(value, w, j) && turn_drivable(value, w, j - 1) &&
+         turn_drivable(value, w, j) && turn_drivable(value, w, j + 1);
+}
+
+}  // namespace
+
 void face_along(std::vector<State>& w) {
   for (std::size_t k = 0; k < w.size(); ++k) {
     const Eigen::Vector2d d = k + 1 < w.size() ? Eigen::Vector2d(xy(w[k + 1]) - xy(w[k]))
@@ -56,74 +65,6 @@ void face_along(std::vector<State>& w) {
     if (d.squaredNorm() > 0.0) w[k][2] = std::atan2(d.y(), d.x());
     w[k][4] = 0.0;
   }
-}
-
-double heading_of(const std::vector<State>& w, std::size_t k) {  // segment k: w_k -> w_k+1
-  const Eigen::Vector2d d = xy(w[k + 1]) - xy(w[k]);
-  return std::atan2(d.y(), d.x());
-}
-
-// Segment k driven at its heading: each disc of the footprint along its own parallel segment.
-bool segment_free_for(const PolicyValue& value, const std::vector<State>& w, std::size_t k) {
-  const Footprint& f = value.footprint();
-  if (f.is_disc()) return segment_free(value.world(), xy(w[k]), xy(w[k + 1]), value.radius());
-  const Eigen::Vector2d shift = xy(w[k + 1]) - xy(w[k]);
-  for (const Eigen::Vector2d& c : f.placed(xy(w[k]), heading_of(w, k))) {
-    if (!segment_free(value.world(), c, c + shift, value.radius())) return false;
-  }
-  return true;
-}
-
-// The turn in place at inner waypoint k, from segment k-1's heading to segment k's.
-bool turn_free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t k) {
-  const Footprint& f = value.footprint();
-  if (f.is_disc() || k == 0 || k + 1 >= w.size()) return true;
-  const double from = heading_of(w, k - 1);
-  return f.turn_free(value.world(), xy(w[k]), from, std::remainder(heading_of(w, k) - from, 2.0 * std::numbers::pi));
-}
-
-// Moving inner waypoint j keeps the footprint free: the two segments at w_j, and for a footprint
-// that is not a disc the turns at w_j-1, w_j and w_j+1, whose headings it changes.
-bool free_at(const PolicyValue& value, const std::vector<State>& w, std::size_t j) {
-  return segment_free_for(value, w, j - 1) && segment_free_for(value, w, j) && turn_free_at(value, w, j - 1) &&
-         turn_free_at(value, w, j) && turn_free_at(value, w, j + 1);
-}
-
-}  // namespace
-
-bool policy_free(const PolicyValue& value, const std::vector<State>& w) {
-  for (std::size_t k = 0; k + 1 < w.size(); ++k) {
-    if (!segment_free_for(value, w, k) || !turn_free_at(value, w, k)) return false;
-  }
-  return true;
-}
-
-bool straighten_turns(const PolicyValue& value, std::vector<State>& w, double step) {
-  const double most = value.footprint().length() + value.footprint().width();
-  for (std::size_t k = 1; k + 1 < w.size(); ++k) {
-    if (turn_free_at(value, w, k)) continue;
-    // Turn further on (out of a door first), or sooner (lined up before entering one).
-    const Eigen::Vector2d on = (xy(w[k]) - xy(w[k - 1])).normalized(), back = (xy(w[k]) - xy(w[k + 1])).normalized();
-    const State original = w[k];
-    bool fixed = false;
-    for (double s = step; s <= most && !fixed; s += step) {
-      for (const Eigen::Vector2d& d : {on, back}) {
-        w[k][0] = original[0] + s * d.x();
-        w[k][1] = original[1] + s * d.y();
-        if (segment_free_for(value, w, k - 1) && segment_free_for(value, w, k) && turn_free_at(value, w, k - 1) &&
-            turn_free_at(value, w, k) && turn_free_at(value, w, k + 1)) {
-          fixed = true;
-          break;
-        }
-      }
-    }
-    if (!fixed) {
-      w[k] = original;
-      return false;
-    }
-  }
-  face_along(w);
-  return policy_free(value, w);
 }
 
 namespace {

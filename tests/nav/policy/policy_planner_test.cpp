@@ -9,6 +9,7 @@
 #include "amp/core/error.hpp"
 #include "amp/nav/footprint.hpp"
 #include "amp/nav/grid_nav_world.hpp"
+#include "amp/nav/policy/footprint_drive.hpp"
 #include "amp/nav/policy/policy_search.hpp"
 #include "amp/nav/policy/policy_value.hpp"
 #include "nav/lab_world.hpp"

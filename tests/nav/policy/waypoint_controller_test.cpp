@@ -130,10 +130,49 @@ TEST(WaypointController, RetreatsToThePassedWaypointAfterAContact) {
   EXPECT_EQ(c.current(), 1u);  // and on toward the next waypoint again
 }
 
+TEST(WaypointController, TurnsOnTheSpotWhereAFootprintWasCertifiedToByHand) {
+  // As a rectangle is driven: switch within 3 cm (or once past), aim 0.3 m ahead, turn in place
+  // above 0.2 rad of heading error; braking at 0.05 m/s^2, so that the cap sqrt(2 a d) shows.
+  WaypointControllerSettings s;
+  s.d_approach = 0.03;
+  s.lookahead = 0.3;
+  s.turn_in_place = 0.2;
+  s.accel = 0.05;
+  WaypointController c({waypoint(0, 0, 0.2), waypoint(1, 0, 0.2), waypoint(1, 1, 0.2), waypoint(1.1, 2, 0.2)}, s);
+  // From the start toward the right-angle turn at (1, 0), braking to stop there: at 1 m the cap
+  // sqrt(0.1) is above 0.2; at 0.1 m it is sqrt(0.1 * 0.1) = 0.1.
+  EXPECT_NEAR(c.command(at(0.0, 0.0, 0.0)).x(), 0.2, 1e-12);
+  EXPECT_EQ(c.current(), 1u);
+  EXPECT_NEAR(c.command(at(0.9, 0.0, 0.0)).x(), 0.1, 1e-12);
+  // 4 cm beside it and 1 mm past its line: reached, though not within d_approach. The aim is 0.3 m
+  // up the next segment from the projection (t = 0.04), at (1, 0.34): e = atan2(0.3, -0.001) is far
+  // above 0.2 rad, so v = 0 and the robot turns on the spot.
+  const V turn = c.command(at(1.001, 0.04, 0.0));
+  EXPECT_EQ(c.current(), 2u);
+  EXPECT_EQ(turn.x(), 0.0);
+  EXPECT_NEAR(turn.y(), 2.5 * std::atan2(0.3, -0.001), 1e-12);
+  // Lined up within 0.2 rad it drives again: from (1, 0.1) facing 1.5 rad, e = pi/2 - 1.5.
+  EXPECT_NEAR(c.command(at(1.0, 0.1, 1.5)).x(), 0.2 * std::cos(kPi / 2 - 1.5), 1e-12);
+  // The turn of atan(0.1) < 0.2 rad at (1, 1) is not stopped at: no brake before it, and passing
+  // it 5 cm aside does not reach it.
+  EXPECT_NEAR(c.command(at(1.0, 0.9, kPi / 2)).x(), 0.2, 1e-12);
+  c.command(at(1.05, 1.001, kPi / 2));
+  EXPECT_EQ(c.current(), 2u);
+  // The paper's controller (turn_in_place infinite) drives at v cos e short of 90 degrees.
+  WaypointController paper({waypoint(0, 0, 0.2), waypoint(1, 0, 0.2), waypoint(1, 1, 0.2)});
+  EXPECT_NEAR(paper.command(at(0.0, 0.0, 0.5)).x(), 0.2 * std::cos(0.5), 1e-12);
+}
+
 TEST(WaypointController, RefusesBadSettings) {
   WaypointControllerSettings bad;
   bad.d_approach = 0.0;
   EXPECT_THROW(WaypointController({waypoint(0, 0, 1)}, bad), ParameterError);
+  WaypointControllerSettings no_turn;
+  no_turn.turn_in_place = 0.0;
+  EXPECT_THROW(WaypointController({waypoint(0, 0, 1)}, no_turn), ParameterError);
+  WaypointControllerSettings behind;
+  behind.lookahead = -1.0;
+  EXPECT_THROW(WaypointController({waypoint(0, 0, 1)}, behind), ParameterError);
   EXPECT_THROW(WaypointController({}), ParameterError);
 }
 

@@ -9,6 +9,11 @@ namespace amp::nav {
 
 // The parameters of `policy-search` beyond DriveSettings: the controller's and the reward's.
 struct PolicyNavigatorSettings {
+  // A footprint that is not a disc switches within this of a waypoint (or once past it), and turns
+  // on the spot above this heading error: about one control period's travel at top speed, and a
+  // heading error that leaves a 54 cm body in a 60 cm door.
+  static constexpr double kRectangleSwitch = 0.03;       // m
+  static constexpr double kRectangleTurnInPlace = 0.2;   // rad
   double d_approach = 0.3;     // m (eq. 3)
   double heading_gain = 2.5;   // 1/s
   double c = 1.0, c_time = 1.0, g = 100.0, h = 50.0;  // the reward (PolicyRewardSettings)

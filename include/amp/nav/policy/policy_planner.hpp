@@ -24,6 +24,7 @@ struct PolicyPlannerSettings {
 struct PolicyPlan {
   std::vector<Eigen::Vector2d> dp_path;  // (a) the value function's maximum-likelihood cells' centres
   PolicySearchResult search;             // (b) projected, (c) searched, (d) with insertions
+  int squared_crossings = 0;             // narrow passages then crossed square-on (in `search.final`)
 };
 
 // Table 1 of "Policy search seeded by a value function" on a map: value iteration from the goal
@@ -36,7 +37,9 @@ PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, 
                        const PolicyPlannerSettings& settings = {});
 // The same for any footprint, checked at the headings of the path: value iteration runs for one of
 // its discs, and a projected policy whose segments or turns in place the whole footprint cannot
-// drive is refused ("no passage wide enough for the footprint ... at its heading").
+// drive is refused ("no passage wide enough for the footprint ... at its heading"), as is a start
+// where it cannot turn from facing the goal (where the robot starts) onto the path. The final
+// policy then crosses narrow passages square-on (square_crossings; `value_final` is its value).
 PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal,
                        const Footprint& footprint, const PolicyPlannerSettings& settings = {});
 

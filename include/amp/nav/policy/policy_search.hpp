@@ -39,15 +39,8 @@ struct PolicySearchResult {
 // never move. Deterministic.
 PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& value, const PolicySearchSettings& settings = {});
 
-// Whether the value's footprint can drive the whole policy: each segment at its heading and each
-// turn in place at an inner waypoint.
-bool policy_free(const PolicyValue& value, const std::vector<State>& w);
-
-// For a footprint that is not a disc: each inner waypoint where it cannot turn in place moves, by
-// `step` at a time up to its length + width, further along its incoming segment (to turn once out
-// of a door) or back along its outgoing one (to line up before entering it), to the first place
-// where it turns and both segments stay free. Returns whether the whole policy is then drivable.
-bool straighten_turns(const PolicyValue& value, std::vector<State>& w, double step);
+// Each waypoint faces along the segment it begins (the last along the one it ends); turn rates 0.
+void face_along(std::vector<State>& w);
 
 // Whether the disc of radius r is free all along a -> b (conservative advancement on the world's
 // exact clearance; touching counts as blocked).

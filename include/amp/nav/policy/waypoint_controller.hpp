@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,7 +16,15 @@ struct WaypointControllerSettings {
   double heading_gain = 2.5;    // 1/s: turn rate per radian of heading error
   double goal_tolerance = 0.1;  // m: within this of the last waypoint, the policy has arrived
   double accel = 2.5;           // m/s^2 the robot can brake at: it slows to stop at the last waypoint
-  // Throws ParameterError naming the setting unless all are > 0 and finite.
+  // rad: a heading error above this is turned on the spot (v = 0), and a waypoint whose turn is
+  // larger is stopped at and switched from once passed, as a footprint certified turning in place
+  // at the waypoints must be driven (Nav2's Regulated Pure Pursuit rotates to heading likewise).
+  // Infinite: never, v = v_ref max(0, cos e) as the paper's controller.
+  double turn_in_place = std::numeric_limits<double>::infinity();
+  // m: the pure-pursuit aim ahead of the projection on the segment; 0 means d_approach.
+  double lookahead = 0.0;
+  // Throws ParameterError naming the setting unless d_approach, heading_gain, goal_tolerance and
+  // accel are > 0 and finite, turn_in_place > 0 and lookahead >= 0 and finite.
   void validate() const;
 };
 
@@ -29,7 +38,8 @@ struct WaypointControllerSettings {
 // stop there. Waypoints are 5-D (x, y, theta, v, omega; core::UnicycleSpace's layout); their
 // heading and turn rate are what the search shapes the path with, not set points. Driven on a
 // simulator, a refused move (the footprint touched an obstacle) sends it back to the waypoint
-// before the current one; within goal_tolerance of it, it resumes.
+// before the current one; within goal_tolerance of it, it resumes. With a finite turn_in_place,
+// waypoints where the path turns by more are driven to and turned at on the spot (see the setting).
 class WaypointController final : public MotionController {
  public:
   // Throws ParameterError for bad settings or no waypoints.
@@ -48,6 +58,9 @@ class WaypointController final : public MotionController {
   const std::vector<State>& waypoints() const { return waypoints_; }
 
  private:
+  // How far the path turns at waypoint j (0 at the ends), and whether the robot at s has reached it.
+  double turn_at(std::size_t j) const;
+  bool reached(const RobotState& s, std::size_t j) const;
   // (v, omega) toward `aim` at up to v_ref, and slow enough to stop within brake_distance.
   Eigen::Vector2d steer(const RobotState& s, const Eigen::Vector2d& aim, double v_ref, double brake_distance) const;
 
