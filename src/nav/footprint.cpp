@@ -48,25 +48,27 @@ Footprint Footprint::rectangle(double length, double width, double cover_toleran
 }
 
 std::vector<Eigen::Vector2d> Footprint::placed(const Eigen::Vector2d& p, double heading) const {
-  const double c = std::cos(heading), s = std::sin(heading);
   std::vector<Eigen::Vector2d> out;
   out.reserve(centres_.size());
-  for (const Eigen::Vector2d& b : centres_) out.emplace_back(p.x() + c * b.x() - s * b.y(), p.y() + s * b.x() + c * b.y());
+  all_placed(p, heading, [&](const Eigen::Vector2d& q) {
+    out.push_back(q);
+    return true;
+  });
   return out;
 }
 
 bool Footprint::free(const NavWorld& world, const Eigen::Vector2d& p, double heading) const {
   if (is_disc()) return world.disc_free(p, radius_);
-  for (const Eigen::Vector2d& q : placed(p, heading)) {
-    if (!world.disc_free(q, radius_)) return false;
-  }
-  return true;
+  return all_placed(p, heading, [&](const Eigen::Vector2d& q) { return world.disc_free(q, radius_); });
 }
 
 double Footprint::clearance(const NavWorld& world, const Eigen::Vector2d& p, double heading) const {
   if (is_disc()) return world.clearance(p, radius_);
   double least = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector2d& q : placed(p, heading)) least = std::min(least, world.clearance(q, radius_));
+  all_placed(p, heading, [&](const Eigen::Vector2d& q) {
+    least = std::min(least, world.clearance(q, radius_));
+    return true;
+  });
   return least;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,6 +32,17 @@ class Footprint {
 
   // The discs' centres in the world at pose (p, heading).
   std::vector<Eigen::Vector2d> placed(const Eigen::Vector2d& p, double heading) const;
+  // Calls visit(centre) with each disc's centre in the world at pose (p, heading) until one call
+  // returns false, without allocating (simulators and searches ask this millions of times).
+  // Returns whether every call returned true.
+  template <class Visit>
+  bool all_placed(const Eigen::Vector2d& p, double heading, Visit&& visit) const {
+    const double c = std::cos(heading), s = std::sin(heading);
+    for (const Eigen::Vector2d& b : centres_) {
+      if (!visit(Eigen::Vector2d(p.x() + c * b.x() - s * b.y(), p.y() + s * b.x() + c * b.y()))) return false;
+    }
+    return true;
+  }
   // Every disc free (touching is free, as NavWorld::disc_free).
   bool free(const NavWorld& world, const Eigen::Vector2d& p, double heading) const;
   // The least clearance of the discs: < 0 when one overlaps an obstacle.

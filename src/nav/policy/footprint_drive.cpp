@@ -29,10 +29,8 @@ bool segment_drivable(const PolicyValue& value, const std::vector<State>& w, std
   const Footprint& f = value.footprint();
   if (f.is_disc()) return segment_free(value.world(), xy(w[k]), xy(w[k + 1]), value.radius());
   const Eigen::Vector2d shift = xy(w[k + 1]) - xy(w[k]);
-  for (const Eigen::Vector2d& c : f.placed(xy(w[k]), heading_of(w, k))) {
-    if (!segment_free(value.world(), c, c + shift, value.radius())) return false;
-  }
-  return true;
+  return f.all_placed(xy(w[k]), heading_of(w, k),
+                      [&](const Eigen::Vector2d& c) { return segment_free(value.world(), c, c + shift, value.radius()); });
 }
 
 bool turn_drivable(const PolicyValue& value, const std::vector<State>& w, std::size_t k) {
@@ -111,7 +109,7 @@ double room_along(const PolicyValue& value, const Eigen::Vector2d& centre, doubl
   const Eigen::Vector2d u = unit(heading);
   const NavWorld& world = value.world();
   double least = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector2d& q : value.footprint().placed(centre, heading)) {
+  value.footprint().all_placed(centre, heading, [&](const Eigen::Vector2d& q) {
     least = std::min(least, world.clearance(q, value.radius()));
     for (const double side : {1.0, -1.0}) {
       for (double t = 0.0; t < half && least > floor;) {
@@ -121,7 +119,8 @@ double room_along(const PolicyValue& value, const Eigen::Vector2d& centre, doubl
         t += std::max(0.0, c - least - spacing);
       }
     }
-  }
+    return least > floor;
+  });
   return least;
 }
 

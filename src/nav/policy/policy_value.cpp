@@ -161,10 +161,7 @@ double PolicyValue::reward_at(const Eigen::Vector2d& p, const Eigen::Vector2d& s
   const double heading = side.squaredNorm() > 0.0 ? std::atan2(-side.x(), side.y()) : 0.0;
   auto footprint_within = [&](const Eigen::Vector2d& q) {
     if (footprint_.is_disc()) return within_range(q, range);
-    for (const Eigen::Vector2d& c : footprint_.placed(q, heading)) {
-      if (within_range(c, range)) return true;
-    }
-    return false;
+    return !footprint_.all_placed(q, heading, [&](const Eigen::Vector2d& c) { return !within_range(c, range); });
   };
   double near = 0.0;
   for (int k = 0; k < 3; ++k) {
