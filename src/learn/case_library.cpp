@@ -41,7 +41,9 @@ const core::SettingsSchema<CaseSettings>& CaseSettings::schema() {
        core::real_field<S>("learning_rate", &S::learning_rate, 0, 1,
                            "lambda: how far a reinforced case moves toward the history, in (0, 1]"),
        core::real_field<S>("new_case_threshold", &S::new_case_threshold, 0, 1,
-                           "a relative similarity below this creates a case, in [0, 1)")});
+                           "a relative similarity below this creates a case, in [0, 1)"),
+       core::bool_field<S>("reward_weighted", &S::reward_weighted,
+                           "reinforced outputs move in proportion to each sample's reward (false: the paper's rule)")});
   return schema;
 }
 
@@ -62,9 +64,11 @@ CaseHistory::CaseHistory(int length) {
   if (length < 1) throw ParameterError("case_history: length " + std::to_string(length) + " is below 1");
   inputs_.resize(static_cast<std::size_t>(length));
   outputs_.resize(static_cast<std::size_t>(length));
+  rewards_.resize(static_cast<std::size_t>(length));
 }
 
-void CaseHistory::push(const CaseInputs& inputs, const CaseOutputs& outputs) {
+void CaseHistory::push(const CaseInputs& inputs, const CaseOutputs& outputs, double reward) {
+  if (!in_unit(reward)) throw ParameterError("case_history: reward is " + number(reward) + ", outside [0, 1]");
   for (int x = 0; x < kCaseInputs; ++x) {
     if (!in_unit(inputs[x])) {
       throw ParameterError("case_history: input " + std::to_string(x) + " is " + number(inputs[x]) +
@@ -86,6 +90,7 @@ void CaseHistory::push(const CaseInputs& inputs, const CaseOutputs& outputs) {
   }
   inputs_[s] = inputs;
   outputs_[s] = outputs;
+  rewards_[s] = reward;
 }
 
 // ---- CaseLibrary ----
@@ -189,7 +194,7 @@ CaseMatch CaseLibrary::retrieve(const CaseHistory& env) const {
   return best;
 }
 
-CaseOutputs CaseLibrary::adapt(const CaseMatch& m, core::Rng& rng) const {
+CaseOutputs CaseLibrary::adapt(const CaseMatch& m, core::Rng& rng, double min_spread) const {
   if (m.case_index < 0 || m.case_index >= size() || m.position < 1 || m.position > settings_.case_length) {
     throw ParameterError("case_library: no case " + std::to_string(m.case_index) + " at position " +
                          std::to_string(m.position) + " to adapt");
@@ -200,7 +205,8 @@ CaseOutputs CaseLibrary::adapt(const CaseMatch& m, core::Rng& rng) const {
   const int q = std::clamp(m.position, 0, settings_.case_length - 1);
   // Exploration "allows the system to explore the search space locally": its size is the RMS
   // difference of the match, so a well-matched case is followed closely.
-  const double spread = std::sqrt(std::max(m.error, 0.0));
+  // The caller may ask for more (SINS in AMP: when the robot has stalled, docs/sins.md).
+  const double spread = std::max(std::sqrt(std::max(m.error, 0.0)), std::clamp(min_spread, 0.0, 1.0));
   CaseOutputs out = c.outputs[static_cast<std::size_t>(q)];
   for (int x = 0; x < kCaseOutputs; ++x) out[x] = std::clamp(out[x] + spread * rng.uniform(-1.0, 1.0), 0.0, 1.0);
   return out;
@@ -232,8 +238,10 @@ Learned CaseLibrary::learn(const CaseMatch& m, const CaseHistory& env) {
       const auto k = static_cast<std::size_t>(m.position - 1 - i);
       const CaseInputs& ei = env.input(newest - i);
       const CaseOutputs& eo = env.output(newest - i);
+      // Reward weighting (an AMP addition, docs/sins.md): outputs move only as far as they paid.
+      const double wo = settings_.reward_weighted ? w * env.reward(newest - i) : w;
       for (int x = 0; x < kCaseInputs; ++x) c.inputs[k][x] += w * (ei[x] - c.inputs[k][x]);
-      for (int x = 0; x < kCaseOutputs; ++x) c.outputs[k][x] += w * (eo[x] - c.outputs[k][x]);
+      for (int x = 0; x < kCaseOutputs; ++x) c.outputs[k][x] += wo * (eo[x] - c.outputs[k][x]);
     }
     result = Learned::kReinforced;
   } else if (rho < settings_.new_case_threshold && env.full()) {

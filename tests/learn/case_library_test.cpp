@@ -169,6 +169,48 @@ TEST(CaseLibraryLearn, ReinforcementMovesTheAlignedPartWithOverlapAttenuation) {
   EXPECT_EQ(lib.at(0).uses, 0);
 }
 
+// Reward weighting (an AMP addition): each aligned output sample moves by the overlap weight times
+// the history sample's reward; inputs move as before.
+TEST(CaseLibraryLearn, RewardWeightingScalesOnlyTheOutputs) {
+  for (const bool weighted : {true, false}) {
+    CaseSettings s = hand_library().settings();
+    s.reward_weighted = weighted;
+    CaseLibrary lib(s, hand_library().cases());
+    CaseHistory h(3);
+    h.push({0, 0.5, 0, 0}, kHistoryOutputs[0], 1.0);
+    h.push({0.5, 0.5, 0, 0}, kHistoryOutputs[1], 0.5);
+    h.push({1, 0.25, 0, 0}, kHistoryOutputs[2], 0.0);
+    EXPECT_EQ(h.reward(1), 0.5);
+    ASSERT_EQ(lib.learn(lib.match(1, 3, h), h), Learned::kReinforced);
+    const Case& c = lib.at(1);
+    expect_array_near(c.inputs[2], {0.5, 0.125, 0, 0}, "k2 inputs");
+    expect_array_near(c.inputs[1], {1 - 0.5 / 3, 0.5, 0, 0}, "k1 inputs");
+    if (weighted) {
+      expect_array_near(c.outputs[2], {1, 1, 1, 1}, "k2 outputs (reward 0)");
+      // k1: w = 1/3 x reward 1/2; outputs (.25, .75, 0, 1) -> 1.
+      expect_array_near(c.outputs[1], {0.25 + 0.75 / 6, 0.75 + 0.25 / 6, 1.0 / 6, 1}, "k1 outputs");
+    } else {
+      expect_array_near(c.outputs[2], {0.75, 0.75, 0.75, 0.75}, "k2 outputs (the paper's rule)");
+      expect_array_near(c.outputs[1], {0.25 + 0.75 / 3, 0.75 + 0.25 / 3, 1.0 / 3, 1}, "k1 outputs");
+    }
+    // k0: w = 1/6 x reward 1, either way.
+    expect_array_near(c.outputs[0], {0.5 - 0.5 / 6, 0.5 - 0.5 / 6, 0.5 - 0.5 / 6, 0.5 - 0.5 / 6}, "k0 outputs");
+  }
+  CaseHistory h(2);
+  EXPECT_THROW(h.push({0, 0, 0, 0}, {0, 0, 0, 0}, 1.5), ParameterError);
+  EXPECT_THROW(h.push({0, 0, 0, 0}, {0, 0, 0, 0}, -0.1), ParameterError);
+  EXPECT_EQ(h.size(), 0);
+}
+
+TEST(CaseLibraryAdapt, ALeastSpreadWidensAnExactMatch) {
+  const CaseLibrary lib = hand_library();
+  core::Rng rng(21), twin(21);
+  const Out got = lib.adapt({1, 1, 1, 0.0}, rng, 0.3);  // sqrt(0) < .3: the spread is .3
+  for (int x = 0; x < 4; ++x) EXPECT_EQ(got[x], std::clamp(kCase1Outputs[1][x] + 0.3 * twin.uniform(-1.0, 1.0), 0.0, 1.0));
+  core::Rng a(2), b(2);
+  EXPECT_EQ(lib.adapt({1, 1, 1, 0.0625}, a, 0.1), lib.adapt({1, 1, 1, 0.0625}, b));  // .25 > .1: unchanged
+}
+
 TEST(CaseLibraryLearn, PartialOverlapLeavesThePredictionAlone) {
   CaseLibrary lib = hand_library();
   const CaseHistory h = hand_history();

@@ -23,6 +23,11 @@ struct CaseSettings {
   int case_length = 4;              // samples per case and per history (the paper's case-length)
   double learning_rate = 0.5;       // lambda of the reinforcement update, in (0, 1]
   double new_case_threshold = 0.1;  // a relative similarity below this starts a new case, in [0, 1)
+  // Reinforcement moves each aligned output sample toward the history's by learning_rate x the
+  // overlap factor x that sample's reward (CaseHistory::push), so that outputs which paid off
+  // attract the case and the others do not. An AMP addition: the paper's rule (false) has no such
+  // term, and measured, it drifts from good parameters as readily as toward them (docs/sins.md).
+  bool reward_weighted = true;
   static const core::SettingsSchema<CaseSettings>& schema();
   void validate() const;  // throws ParameterError naming the setting
 };
@@ -34,8 +39,10 @@ class CaseHistory {
  public:
   explicit CaseHistory(int length);  // throws ParameterError for length < 1
 
-  // Throws ParameterError for a value outside [0, 1] (or NaN); the history is then unchanged.
-  void push(const CaseInputs& inputs, const CaseOutputs& outputs);
+  // `reward` in [0, 1] says how well the outputs did over the sample (used by reward-weighted
+  // reinforcement; 1 when the caller has none). Throws ParameterError for a value outside [0, 1]
+  // (or NaN); the history is then unchanged.
+  void push(const CaseInputs& inputs, const CaseOutputs& outputs, double reward = 1.0);
   void clear() { start_ = size_ = 0; }
 
   int size() const { return size_; }
@@ -43,6 +50,7 @@ class CaseHistory {
   bool full() const { return size_ == capacity(); }
   const CaseInputs& input(int i) const { return inputs_[slot(i)]; }     // 0 <= i < size()
   const CaseOutputs& output(int i) const { return outputs_[slot(i)]; }  // 0 <= i < size()
+  double reward(int i) const { return rewards_[slot(i)]; }               // 0 <= i < size()
 
  private:
   int slot(int i) const {
@@ -51,6 +59,7 @@ class CaseHistory {
   }
   std::vector<CaseInputs> inputs_;
   std::vector<CaseOutputs> outputs_;
+  std::vector<double> rewards_;
   int start_ = 0;  // slot of the oldest sample
   int size_ = 0;
 };
@@ -106,8 +115,9 @@ class CaseLibrary {
   CaseMatch match(int j, int p, const CaseHistory& env) const;
 
   // The case's outputs at min(p, case_length - 1), the sample after the aligned part (or the
-  // last), each plus sqrt(error) * u, u ~ U(-1, 1) drawn in output order, clamped to [0, 1].
-  CaseOutputs adapt(const CaseMatch& m, core::Rng& rng) const;
+  // last), each plus s * u, u ~ U(-1, 1) drawn in output order, clamped to [0, 1], where the
+  // spread s = max(sqrt(error), min_spread) (min_spread clamped to [0, 1]).
+  CaseOutputs adapt(const CaseMatch& m, core::Rng& rng, double min_spread = 0.0) const;
 
   // Ebar / E for the case's past uses (1 before its first use). Both are floored at 1e-12, so a
   // case that has always matched exactly and does so again scores 1, not 0.

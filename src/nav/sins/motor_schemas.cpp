@@ -26,6 +26,19 @@ double from_unit(double u, SchemaParameters::Range r) { return r.lo + std::clamp
 
 SchemaParameters SchemaParameters::middle() { return from_normalised({0.5, 0.5, 0.5, 0.5}); }
 
+const core::SettingsSchema<SchemaParameters>& SchemaParameters::schema() {
+  using S = SchemaParameters;
+  static const core::SettingsSchema<S> schema(
+      "schema_parameters",
+      {core::real_field<S>("obstacle_gain", &S::obstacle_gain, kObstacleGain.lo, kObstacleGain.hi,
+                           "AVOID-STATIC-OBSTACLE's gain (the static system's, and where the adaptive one starts)"),
+       core::real_field<S>("goal_gain", &S::goal_gain, kGoalGain.lo, kGoalGain.hi, "MOVE-TO-GOAL's gain"),
+       core::real_field<S>("noise_gain", &S::noise_gain, kNoiseGain.lo, kNoiseGain.hi, "NOISE's gain"),
+       core::real_field<S>("noise_persistence", &S::noise_persistence, kNoisePersistence.lo, kNoisePersistence.hi,
+                           "steps a noise direction is held")});
+  return schema;
+}
+
 void SchemaParameters::validate() const {
   check(obstacle_gain, kObstacleGain, "obstacle_gain");
   check(goal_gain, kGoalGain, "goal_gain");

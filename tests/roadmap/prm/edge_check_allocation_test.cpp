@@ -1,26 +1,14 @@
 // An edge check allocates nothing once its scratch has grown to the longest edge seen (no allocation in hot loops):
 // global operator new is replaced by a counting one in this test executable only.
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include <gtest/gtest.h>
+
+#include "support/counting_allocator.hpp"
 
 #include "amp/roadmap/competence/grid_astar_planner.hpp"
 #include "amp/roadmap/local_planners/straight_line_planner.hpp"
 #include "amp/world/problem.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using amp::test::g_allocations;
 
 namespace amp::roadmap {
 namespace {

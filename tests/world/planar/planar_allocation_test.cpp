@@ -2,29 +2,15 @@
 // replaced by a counting one for this executable.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
+#include "support/counting_allocator.hpp"
+
 #include <memory>
-#include <new>
 #include <numbers>
 
 #include "amp/core/rng.hpp"
 #include "amp/world/planar_checker.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+using amp::test::g_allocations;
 
 namespace amp::world {
 namespace {

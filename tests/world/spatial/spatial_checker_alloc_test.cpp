@@ -1,28 +1,15 @@
 // A check must not allocate: this binary counts every operator new while a flag is up.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
+#include "support/counting_allocator.hpp"
+
 
 #include "amp/core/rng.hpp"
 #include "amp/core/se3_space.hpp"
 #include "amp/world/spatial_environment.hpp"
 
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"  // malloc/free pair by design
-
-void* operator new(std::size_t n) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using amp::test::g_allocations;
+using amp::test::g_counting;
 
 namespace amp::world {
 namespace {

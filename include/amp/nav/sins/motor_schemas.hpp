@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include "amp/core/settings_schema.hpp"
+
 namespace amp::core {
 class Rng;
 }
@@ -18,7 +20,7 @@ struct SchemaParameters {
   double obstacle_gain = 2.5;      // AVOID-STATIC-OBSTACLE's magnitude at the safety margin
   double goal_gain = 1.0;          // MOVE-TO-GOAL's magnitude
   double noise_gain = 0.5;         // NOISE's magnitude
-  double noise_persistence = 10;   // steps a noise direction is held (rounded, at least 1)
+  double noise_persistence = 10.5; // steps a noise direction is held (rounded, at least 1)
 
   struct Range {
     double lo, hi;
@@ -34,6 +36,9 @@ struct SchemaParameters {
   // Each parameter mapped to [0, 1] over its range (the case library's outputs), and back (clamped).
   std::array<double, 4> normalised() const;
   static SchemaParameters from_normalised(const std::array<double, 4>& u);
+  // The four as method parameters (obstacle_gain, goal_gain, noise_gain, noise_persistence), with
+  // the ranges above; their defaults are the middle of the ranges.
+  static const core::SettingsSchema<SchemaParameters>& schema();
 };
 
 struct SchemaSettings {

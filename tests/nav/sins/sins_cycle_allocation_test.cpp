@@ -1,0 +1,51 @@
+// SINS's control loop runs every step: the motor schemas, the trends and the adaptive system's
+// cycle (perceive, retrieve, adapt, learn) must not touch the heap, apart from a created case's two
+// vectors. Global operator new is replaced by a counting one in this executable.
+#include <gtest/gtest.h>
+
+#include "support/counting_allocator.hpp"
+
+#include <array>
+#include <vector>
+
+#include "amp/core/rng.hpp"
+#include "amp/nav/sins/environment_trends.hpp"
+#include "amp/nav/sins/motor_schemas.hpp"
+#include "amp/nav/sins/parameter_policy.hpp"
+
+namespace amp::nav {
+namespace {
+
+TEST(SinsCycleAllocation, StepsAndIntervalsAllocateOnlyForCreatedCases) {
+  learn::CaseSettings cs;
+  cs.case_length = 20;
+  cs.max_cases = 10;
+  CaseBasedParameters sins(cs);
+  MotorSchemas schemas;
+  EnvironmentTrends trends(2.0, 1.0);
+  core::Rng rng(4);
+  std::vector<double> readings(16);
+  std::vector<Eigen::Vector2d> directions(16);
+  for (int i = 0; i < 16; ++i) directions[i] = Eigen::Vector2d(std::cos(i * 0.3927), std::sin(i * 0.3927));
+  Eigen::Vector2d position(1, 1);
+  const Eigen::Vector2d goal(30, 30);
+  SchemaParameters p = sins.begin_world(rng);
+  trends.reset(position, goal);
+  const long before = amp::test::allocations();
+  long created = 0;
+  for (int step = 1; step <= 6000; ++step) {
+    const double regime = (step / 600) % 3;  // three kinds of surroundings in turn
+    for (double& r : readings) r = rng.uniform(0.1 * regime, 2.0);
+    position += schemas.velocity(position, goal, readings, directions, p, rng);
+    trends.step(readings, position);
+    if (step % 12 == 0) {
+      const int cases = sins.cases();
+      p = sins.end_interval(trends.close_interval(), rng);
+      created += sins.cases() - cases;
+    }
+  }
+  EXPECT_EQ(amp::test::allocations() - before, 2 * created);
+}
+
+}  // namespace
+}  // namespace amp::nav

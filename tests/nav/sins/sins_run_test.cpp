@@ -1,0 +1,197 @@
+#include "amp/nav/sins/sins_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "amp/core/error.hpp"
+#include "amp/core/rng.hpp"
+#include "amp/nav/polygon_nav_world.hpp"
+#include "amp/nav/sins/parameter_policy.hpp"
+
+namespace amp::nav {
+namespace {
+
+using V = Eigen::Vector2d;
+
+WorldOutcome outcome(bool solved, int steps, double distance, double optimal, int collisions, double ms) {
+  WorldOutcome w;
+  w.solved = solved;
+  w.steps = steps;
+  w.distance = distance;
+  w.optimal = optimal;
+  w.virtual_collisions = collisions;
+  w.time_ms = ms;
+  return w;
+}
+
+TEST(SinsEstimators, CumulativeAveragesByHand) {
+  const std::vector<WorldOutcome> worlds{outcome(true, 40, 36.0, 30.0, 2, 1.0), outcome(false, 1000, 500.0, 32.0, 7, 9.0),
+                                         outcome(true, 60, 48.0, 40.0, 0, 2.0)};
+  const std::vector<Estimators> c = cumulative_estimates(worlds);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].worlds, 1);
+  EXPECT_DOUBLE_EQ(c[0].solved_fraction, 1.0);
+  EXPECT_DOUBLE_EQ(c[0].distance_ratio_mean, 1.2);
+  EXPECT_DOUBLE_EQ(c[1].solved_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(c[1].steps_mean, 520.0);
+  EXPECT_DOUBLE_EQ(c[1].distance_ratio_mean, 1.2);  // over the solved worlds only
+  const Estimators& e = c[2];
+  EXPECT_DOUBLE_EQ(e.solved_fraction, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(e.steps_mean, 1100.0 / 3.0);
+  EXPECT_DOUBLE_EQ(e.distance_mean, 584.0 / 3.0);
+  EXPECT_DOUBLE_EQ(e.distance_ratio_mean, (1.2 + 1.2) / 2.0);
+  EXPECT_DOUBLE_EQ(e.virtual_collisions_mean, 3.0);
+  EXPECT_DOUBLE_EQ(e.time_per_world_ms_mean, 4.0);
+  EXPECT_EQ(estimate(worlds, 0).worlds, 0);
+  EXPECT_EQ(estimate({outcome(false, 5, 1, 1, 0, 0)}, 1).distance_ratio_mean, 0.0);
+}
+
+SinsSettings exact_settings() {
+  SinsSettings s;
+  s.sensor_noise = 0.0;
+  return s;
+}
+
+// An empty box: the static robot without noise goes straight at one metre a step.
+TEST(SinsRunWorld, AnEmptyBoxIsCrossedInAStraightLine) {
+  const SinsSettings s = exact_settings();
+  const ClutterWorld w = assemble_clutter_world({}, V(2, 20), V(38, 20), s.world);
+  StaticParameters policy(SchemaParameters{2.5, 1.0, 0.0, 10.0});
+  core::Rng rng(1);
+  WorldTrace trace;
+  const WorldOutcome o = run_world(w, 0, policy, s, rng, nullptr, &trace);
+  EXPECT_TRUE(o.solved);
+  // After 35 steps the robot is 1 m short; the 36th step ends on the goal.
+  EXPECT_EQ(o.steps, 36);
+  EXPECT_NEAR(o.distance, 36.0, 1e-9);
+  EXPECT_EQ(o.virtual_collisions, 0);
+  EXPECT_EQ(o.blocked, 0);
+  EXPECT_NEAR(o.min_clearance, 2.0 - 0.25, 1e-9);  // at the start, 2 m from the left wall
+  ASSERT_EQ(trace.positions.size(), 37u);
+  ASSERT_EQ(trace.parameters.size(), 36u);
+  for (std::size_t i = 0; i < trace.positions.size(); ++i) {
+    EXPECT_NEAR((trace.positions[i] - V(2.0 + static_cast<double>(i), 20)).norm(), 0.0, 1e-9) << i;
+  }
+}
+
+TEST(SinsRunWorld, StopsAtTheStepLimitUnsolved) {
+  SinsSettings s = exact_settings();
+  s.step_limit = 10;
+  const ClutterWorld w = assemble_clutter_world({}, V(2, 20), V(38, 20), s.world);
+  StaticParameters policy(SchemaParameters{2.5, 1.0, 0.0, 10.0});
+  core::Rng rng(1);
+  const WorldOutcome o = run_world(w, 0, policy, s, rng);
+  EXPECT_FALSE(o.solved);
+  EXPECT_EQ(o.steps, 10);
+  EXPECT_NEAR(o.distance, 10.0, 1e-9);
+}
+
+// Generated worlds, all three systems: every position is free for the disc, "solved" means the last
+// step passed within the tolerance of the goal, and the counts agree with the trace.
+TEST(SinsRunWorld, NeverPassesThroughAnObstacleAndReachesWhatItSays) {
+  SinsSettings s;
+  s.step_limit = 400;
+  s.worlds = 6;
+  for (const char* system : {"static", "random", "adaptive"}) {
+    auto policy = make_parameter_policy(system, {}, SchemaParameters::middle());
+    ClutterWorldSequence sequence(17, s.world);
+    core::Rng rng(3);
+    for (int i = 0; i < s.worlds; ++i) {
+      const ClutterWorld w = sequence.next();
+      WorldTrace trace;
+      const WorldOutcome o = run_world(w, i, *policy, s, rng, nullptr, &trace);
+      ASSERT_EQ(trace.positions.size(), static_cast<std::size_t>(o.steps) + 1);
+      for (const V& p : trace.positions) {
+        ASSERT_TRUE(w.world->disc_free(p, s.world.robot_radius)) << system << " world " << i << " at " << p.transpose();
+      }
+      const V& last = trace.positions.back();
+      const V& before = trace.positions[trace.positions.size() - 2];
+      // Solved exactly when the last step's segment passes within the tolerance of the goal.
+      const V ab = last - before;
+      const double t = ab.squaredNorm() > 0 ? std::clamp((w.goal - before).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+      EXPECT_EQ(o.solved, (before + t * ab - w.goal).norm() <= s.goal_tolerance) << system << " world " << i;
+      EXPECT_GE(o.min_clearance, 0.0);
+      EXPECT_EQ(o.virtual_collisions > 0, o.min_clearance < s.virtual_collision_distance) << system << " world " << i;
+      double driven = 0;
+      for (std::size_t k = 1; k < trace.positions.size(); ++k) driven += (trace.positions[k] - trace.positions[k - 1]).norm();
+      EXPECT_NEAR(o.distance, driven, 1e-9);
+    }
+  }
+}
+
+TEST(SinsRunSequence, TheSameSeedGivesTheSameRunAndEverySystemTheSameWorlds) {
+  SinsSettings s;
+  s.worlds = 5;
+  s.step_limit = 300;
+  auto run = [&](const char* system) {
+    auto policy = make_parameter_policy(system, {}, SchemaParameters::middle());
+    return run_sequence(*policy, s, 42);
+  };
+  const SequenceOutcome a = run("adaptive"), b = run("adaptive"), st = run("static");
+  ASSERT_EQ(a.worlds.size(), 5u);
+  for (std::size_t i = 0; i < a.worlds.size(); ++i) {
+    EXPECT_EQ(a.worlds[i].solved, b.worlds[i].solved);
+    EXPECT_EQ(a.worlds[i].steps, b.worlds[i].steps);
+    EXPECT_EQ(a.worlds[i].distance, b.worlds[i].distance);
+    EXPECT_EQ(a.worlds[i].virtual_collisions, b.worlds[i].virtual_collisions);
+    EXPECT_EQ(a.worlds[i].optimal, st.worlds[i].optimal);  // the same world for both systems
+    EXPECT_EQ(a.worlds[i].clutter, st.worlds[i].clutter);
+  }
+  EXPECT_EQ(a.cases, b.cases);
+  EXPECT_EQ(st.cases, 0);
+}
+
+TEST(SinsRunSequence, TheClutterChangesAtTheSetWorld) {
+  SinsSettings s;
+  s.worlds = 4;
+  s.step_limit = 50;
+  s.world.clutter = 0.1;
+  s.change_at = 2;
+  s.clutter_after = 0.3;
+  StaticParameters policy;
+  const SequenceOutcome o = run_sequence(policy, s, 7);
+  ASSERT_EQ(o.worlds.size(), 4u);
+  EXPECT_LT(o.worlds[0].clutter, 0.2);
+  EXPECT_LT(o.worlds[1].clutter, 0.2);
+  EXPECT_GE(o.worlds[2].clutter, 0.3);
+  EXPECT_GE(o.worlds[3].clutter, 0.3);
+}
+
+TEST(SinsSettings, BadValuesAreNamedOnOneLine) {
+  auto message = [](auto change) {
+    SinsSettings s;
+    change(s);
+    try {
+      s.validate();
+    } catch (const ParameterError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([](SinsSettings& s) { s.world.clutter = 0.0; }).find("clutter"), std::string::npos);
+  EXPECT_NE(message([](SinsSettings& s) { s.world.clutter = 1.0; }).find("clutter"), std::string::npos);
+  EXPECT_NE(message([](SinsSettings& s) { s.step_limit = 0; }).find("step_limit"), std::string::npos);
+  EXPECT_NE(message([](SinsSettings& s) { s.control_interval = 0; }).find("control_interval"), std::string::npos);
+  EXPECT_NE(message([](SinsSettings& s) { s.worlds = 0; }).find("worlds"), std::string::npos);
+  EXPECT_NE(message([](SinsSettings& s) { s.change_at = 3, s.clutter_after = 1.0; }).find("clutter_after"),
+            std::string::npos);
+  EXPECT_NE(message([](SinsSettings& s) { s.stall_exploration = 2.0; }).find("stall_exploration"), std::string::npos);
+  EXPECT_EQ(message([](SinsSettings&) {}), "no error");
+  EXPECT_EQ(message([](SinsSettings& s) { s.step_limit = 0; }).find('\n'), std::string::npos);
+}
+
+TEST(SinsRunSequence, AClutterNoWorldCanHaveIsRefused) {
+  SinsSettings s;
+  s.worlds = 1;
+  s.world.clutter = 0.95;
+  s.world.max_tries = 3;
+  StaticParameters policy;
+  EXPECT_THROW(run_sequence(policy, s, 1), ParameterError);
+}
+
+}  // namespace
+}  // namespace amp::nav
