@@ -12,5 +12,6 @@ void add_bench_command(CLI::App& app, int& exit_code);  // also `amp merge`
 void add_regions_command(CLI::App& app, int& exit_code);
 void add_explore_command(CLI::App& app, int& exit_code);
 void add_navigate_command(CLI::App& app, int& exit_code);
+void add_sins_command(CLI::App& app, int& exit_code);
 
 }  // namespace amp::cli

@@ -1,5 +1,6 @@
 // `amp demo`: the README's main job. Plans every bundled problem and draws the results, then runs
-// the reduced experiments of each capability (benchmark report, UAS, PRM-C/G/L, PGCS exploration).
+// the reduced experiments of each capability (benchmark report, UAS, PRM-C/G/L, PGCS exploration,
+// policy search, SINS).
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -163,6 +164,11 @@ int run_demo(const DemoOptions& o) {
 
   run_demo_explore(dir / "office-map.yaml", out / "explore", o.seed);
   run_demo_navigate(dir / "policy-lab.yaml", out / "navigate", o.seed);
+
+  // SINS: a reduced first experiment set (the static, random and adaptive systems, each run a
+  // sequence of clutter worlds).
+  std::printf("\nSINS: the static, random and adaptive systems over clutter worlds (set 1, reduced)\n");
+  run_demo_bench(dir / "experiments" / "sins-quick.yaml", out / "sins", 0);
   return failures == 0 ? kExitOk : kExitNotSolved;
 }
 

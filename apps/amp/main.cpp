@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   amp::cli::add_regions_command(app, exit_code);
   amp::cli::add_explore_command(app, exit_code);
   amp::cli::add_navigate_command(app, exit_code);
+  amp::cli::add_sins_command(app, exit_code);
   amp::cli::add_bench_command(app, exit_code);
   amp::cli::add_demo_command(app, exit_code);
   try {

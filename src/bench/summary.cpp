@@ -25,7 +25,8 @@ nlohmann::json describe_json(const std::vector<double>& x) {
   const stats::Summary s = stats::describe(x);
   nlohmann::json j = {{"n", s.n},          {"mean", num(s.mean)},     {"std", num(s.std_dev)},
                       {"cv_percent", num(s.cv_percent)}, {"min", num(s.min)}, {"q1", num(s.q1)},
-                      {"median", num(s.median)},         {"q3", num(s.q3)},   {"max", num(s.max)}};
+                      {"median", num(s.median)},         {"q3", num(s.q3)},   {"max", num(s.max)},
+                      {"ci95", {num(s.ci95_low), num(s.ci95_high)}}};
   if (!x.empty()) {
     const stats::Histogram h = stats::histogram(x);
     j["histogram"] = {{"edges", h.edges}, {"counts", h.counts}};

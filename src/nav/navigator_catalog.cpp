@@ -14,6 +14,7 @@ const NavigatorRegistry& builtin_navigators() {
     register_pgcs(r);
     register_policy_search(r);
     register_dwa(r);
+    register_sins(r);
     return r;
   }();
   return registry;

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include "amp/core/error.hpp"
 
 namespace amp::stats {
@@ -39,6 +41,10 @@ Summary describe(std::span<const double> x) {
     for (double v : x) ss += (v - s.mean) * (v - s.mean);
     s.std_dev = std::sqrt(ss / static_cast<double>(s.n - 1));
     if (s.mean != 0.0) s.cv_percent = 100.0 * s.std_dev / s.mean;
+    const boost::math::students_t t(static_cast<double>(s.n - 1));
+    const double half = boost::math::quantile(t, 0.975) * s.std_dev / std::sqrt(static_cast<double>(s.n));
+    s.ci95_low = s.mean - half;
+    s.ci95_high = s.mean + half;
   }
   std::vector<double> sorted(x.begin(), x.end());
   std::sort(sorted.begin(), sorted.end());

@@ -34,6 +34,18 @@ TEST(Describe, MatchesRMeanSdQuantilesType7) {
   EXPECT_EQ(s.max, 30.5);
 }
 
+TEST(Describe, ConfidenceIntervalOfTheMeanMatchesRsTTest) {
+  // R: t.test(g1)$conf.int, i.e. mean -+ qt(.975, 7) sd / sqrt(8) with qt(.975, 7) = 2.364624251592785.
+  const Summary s = describe(kG1);
+  EXPECT_NEAR(s.ci95_low, 10.688258530122356, 1e-9);
+  EXPECT_NEAR(s.ci95_high, 22.311741469877646, 1e-9);
+  // R: t.test(1:5)$conf.int = 1.036757 4.963243.
+  const Summary five = describe(std::vector<double>{1, 2, 3, 4, 5});
+  EXPECT_NEAR(five.ci95_low, 1.036757, 1e-6);
+  EXPECT_NEAR(five.ci95_high, 4.963243, 1e-6);
+  EXPECT_TRUE(std::isnan(describe(std::vector<double>{2.0}).ci95_low));  // no interval from one value
+}
+
 TEST(Describe, MatchesROnRunCostSample) {
   // R: c(mean(x), sd(x), quantile(x, c(0, .25, .5, .75, 1))) for cost(1, 0:239)
   const Summary s = describe(cost_sample(1));

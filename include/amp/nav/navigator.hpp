@@ -37,7 +37,7 @@ struct NavigationOutcome {
 // A navigation method (PGCS exploration and queries, policy search, DWA, SINS): it drives a
 // simulated robot in the task's world. Every random draw comes from `rng`; the run ends when
 // `stop` fires (status kTimeout) or the method is done. Implementations: PgcsNavigator,
-// PolicyNavigator, DwaNavigator.
+// PolicyNavigator, DwaNavigator, SinsNavigator.
 class Navigator {
  public:
   virtual ~Navigator() = default;

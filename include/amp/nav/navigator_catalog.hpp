@@ -23,6 +23,8 @@ void register_pgcs(NavigatorRegistry& registry);
 void register_policy_search(NavigatorRegistry& registry);
 // `dwa` (dwa/dwa_navigator.hpp).
 void register_dwa(NavigatorRegistry& registry);
+// `static`, `random` and `sins`: SINS's three systems, a run a sequence of worlds (sins/sins_navigator.hpp).
+void register_sins(NavigatorRegistry& registry);
 
 // One run of a navigation method on a problem, as `amp bench` does it: the task made from the
 // problem, Rng(seed), a StopCondition(time_limit_s), the run timed and the record's identity

@@ -19,6 +19,10 @@ struct Summary {
   double median = kNaN;
   double q3 = kNaN;
   double max = kNaN;
+  // Student's t 95% confidence interval of the mean, mean -+ t(0.975, n - 1) std_dev / sqrt(n), as R's
+  // t.test(x)$conf.int; NaN for n < 2.
+  double ci95_low = kNaN;
+  double ci95_high = kNaN;
 };
 
 // Throws ParameterError if a value is not finite.

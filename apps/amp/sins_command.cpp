@@ -1,0 +1,220 @@
+// `amp sins`: SINS (Ram & Santamaria 1993): a sequence of clutter worlds driven by a disc under the
+// motor schemas, the parameters chosen by the static, random or adaptive (case-based) system; prints
+// the six estimators, draws the paper's Figures 4 and 5.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "amp/core/error.hpp"
+#include "amp/core/parameters.hpp"
+#include "cli_util.hpp"
+#include "commands.hpp"
+#include "sins_run.hpp"
+
+namespace amp::cli {
+
+namespace {
+
+struct SinsOptions {
+  std::string system = "adaptive";
+  int worlds = nav::SinsSettings{}.worlds;
+  double clutter = nav::ClutterWorldSettings{}.clutter;
+  int max_cases = learn::CaseSettings{}.max_cases;
+  int case_length = learn::CaseSettings{}.case_length;
+  int control_interval = nav::SinsSettings{}.control_interval;
+  int step_limit = nav::SinsSettings{}.step_limit;
+  std::uint64_t seed = 1;
+  std::vector<std::string> params;
+  std::string output;
+  bool json = false;
+  bool force = false;
+  // The named options that are schema parameters, by schema name (they must not also come as --param).
+  std::vector<std::pair<std::string, const CLI::Option*>> named;
+};
+
+constexpr double kProgressAfterS = 1.0;  // short runs draw no bar (nothing to wait for)
+
+// A bar on stderr while driving, only on a terminal: a pipe or a file (tests, scripts) gets
+// stderr's one-line error contract untouched.
+std::function<void(int, int)> progress_bar() {
+  if (isatty(STDERR_FILENO) == 0) return {};
+  const auto t0 = std::chrono::steady_clock::now();
+  auto shown = std::make_shared<bool>(false);
+  return [t0, shown](int done, int total) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (elapsed < kProgressAfterS && !*shown) return;
+    *shown = true;
+    constexpr int kWidth = 30;
+    const double frac = total > 0 ? static_cast<double>(done) / total : 1.0;
+    const int fill = static_cast<int>(frac * kWidth);
+    const double remaining = done > 0 ? elapsed * (total - done) / done : 0.0;
+    std::fprintf(stderr, "\r[%s%s] %d/%d worlds  elapsed %.0f s  remaining %.0f s ", std::string(fill, '#').c_str(),
+                 std::string(kWidth - fill, '.').c_str(), done, total, elapsed, remaining);
+    if (done >= total) std::fputc('\n', stderr);
+    std::fflush(stderr);
+  };
+}
+
+// A number in (0, 1), e.g. the clutter: the fraction of the box covered.
+CLI::Validator open_unit_interval() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const char* begin = text.c_str();
+        char* end = nullptr;
+        const double v = std::strtod(begin, &end);
+        if (end == begin || *end != '\0' || !(v > 0.0 && v < 1.0)) {
+          return "expected a number in (0, 1), got '" + text + "'";
+        }
+        return {};
+      },
+      "(0, 1)");
+}
+
+template <class Schema>
+bool declared(const Schema& schema, const std::string& name) {
+  for (const core::ParamSpec& s : schema.specs()) {
+    if (s.name == name) return true;
+  }
+  return false;
+}
+
+// The settings: the defaults, then --param name=value (by the names of SinsSettings::schema(),
+// SchemaParameters::schema() and CaseSettings::schema()), then the named options.
+SinsSetup read_setup(const SinsOptions& o) {
+  const auto& sins_schema = nav::SinsSettings::schema();
+  const auto& motor_schema = nav::SchemaParameters::schema();
+  const auto& case_schema = learn::CaseSettings::schema();
+  core::ParamMap sins_given, motor_given, case_given;
+  for (const auto& [name, value] : parse_params(o.params)) {
+    if (declared(sins_schema, name)) {
+      sins_given.insert_or_assign(name, value);
+    } else if (declared(motor_schema, name)) {
+      motor_given.insert_or_assign(name, value);
+    } else if (declared(case_schema, name)) {
+      case_given.insert_or_assign(name, value);
+    } else {
+      std::string valid;
+      for (const auto* specs : {&sins_schema.specs(), &motor_schema.specs(), &case_schema.specs()}) {
+        for (const core::ParamSpec& s : *specs) {
+          if (!valid.empty()) valid += ", ";
+          valid += s.name;
+        }
+      }
+      throw ParameterError("--param: unknown parameter '" + name + "' (valid: " + valid + ")");
+    }
+  }
+  for (const auto& [name, option] : o.named) {
+    if (option->count() > 0 && (sins_given.contains(name) || case_given.contains(name))) {
+      throw ParameterError(option->get_name() + ": also given as --param " + name + "=...; give it once");
+    }
+  }
+  SinsSetup setup;
+  try {
+    setup.sins = sins_schema.read(core::Params(sins_schema.owner(), sins_schema.specs(), sins_given));
+    setup.initial = motor_schema.read(core::Params(motor_schema.owner(), motor_schema.specs(), motor_given));
+    setup.cases = case_schema.read(core::Params(case_schema.owner(), case_schema.specs(), case_given));
+  } catch (const ParameterError& e) {
+    throw ParameterError(std::string("--param: ") + e.what());
+  }
+  for (const auto& [name, option] : o.named) {
+    if (option->count() == 0) continue;
+    if (name == "worlds") setup.sins.worlds = o.worlds;
+    if (name == "clutter") setup.sins.world.clutter = o.clutter;
+    if (name == "control_interval") setup.sins.control_interval = o.control_interval;
+    if (name == "step_limit") setup.sins.step_limit = o.step_limit;
+    if (name == "max_cases") setup.cases.max_cases = o.max_cases;
+    if (name == "case_length") setup.cases.case_length = o.case_length;
+  }
+  try {
+    setup.sins.validate();
+    setup.cases.validate();
+    setup.initial.validate();
+  } catch (const ParameterError& e) {
+    // Named after the option that set the parameter the message names, else --param.
+    const std::string what = e.what();
+    std::string flag = "--param";
+    for (const auto& [name, option] : o.named) {
+      if (option->count() > 0 && what.find("'" + name + "'") != std::string::npos) flag = option->get_name();
+    }
+    throw ParameterError(flag + ": " + what);
+  }
+  setup.system = o.system;
+  setup.seed = o.seed;
+  return setup;
+}
+
+int run_sins_command(const SinsOptions& o) {
+  if (!o.output.empty()) check_sins_dir(o.output, o.force, "-o");
+  SinsSetup setup = read_setup(o);
+  setup.progress = progress_bar();
+  // Figure 5 compares the three systems on the same worlds: with -o the other two run as well.
+  const SinsResult result = run_sins(setup, !o.output.empty());
+  if (o.json) {
+    std::cout << result.record.dump(2) << '\n';
+  } else {
+    std::cout << format_sins_table(result.record);
+    if (result.runs.size() > 1) std::cout << '\n' << format_sins_comparison(result);
+  }
+  if (!o.output.empty()) {
+    write_sins_outputs(setup, result, o.output);
+    if (!o.json) {
+      std::cout << "written to " << o.output << "/:";
+      for (const std::string& f : sins_output_files()) std::cout << ' ' << f;
+      std::cout << '\n';
+    }
+  }
+  // Unsolved worlds are a result (solved_fraction counts them), not a failure of the command.
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_sins_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<SinsOptions>();
+  CLI::App* cmd = app.add_subcommand("sins", "SINS (Ram & Santamaria): a disc driven by motor schemas through "
+                                             "clutter worlds, the parameters static, random or adapted from cases; "
+                                             "the six estimators, Figures 4 and 5");
+  cmd->add_option("--system", o->system, "How the schema parameters are chosen: static, random or adaptive [adaptive]")
+      ->check(CLI::IsMember({"static", "random", "adaptive"}));
+  o->named.emplace_back("worlds", cmd->add_option("--worlds", o->worlds, "Worlds in the sequence [" +
+                                                                           std::to_string(o->worlds) + "]")
+                                      ->check(positive_integer()));
+  o->named.emplace_back("clutter", cmd->add_option("--clutter", o->clutter,
+                                                   "Fraction of the box covered by circles, in (0, 1) [0.25]")
+                                       ->check(open_unit_interval()));
+  o->named.emplace_back("max_cases", cmd->add_option("--max-cases", o->max_cases,
+                                                     "Adaptive: no case is created beyond this many [" +
+                                                         std::to_string(o->max_cases) + "]")
+                                         ->check(positive_integer()));
+  o->named.emplace_back("case_length", cmd->add_option("--case-length", o->case_length,
+                                                       "Adaptive: samples per case and per history [" +
+                                                           std::to_string(o->case_length) + "]")
+                                           ->check(positive_integer()));
+  o->named.emplace_back("control_interval", cmd->add_option("--control-interval", o->control_interval,
+                                                            "Steps between two choices of the parameters [" +
+                                                                std::to_string(o->control_interval) + "]")
+                                                ->check(positive_integer()));
+  o->named.emplace_back("step_limit", cmd->add_option("--step-limit", o->step_limit,
+                                                      "Steps per world before it counts as unsolved [" +
+                                                          std::to_string(o->step_limit) + "]")
+                                          ->check(positive_integer()));
+  cmd->add_option("--seed", o->seed, "Random seed (the worlds, and the robot's stream) [1]")->check(unsigned_integer());
+  cmd->add_option("--param", o->params,
+                  "Run, schema or case parameter name=value (repeatable): obstacle_gain (the static system's and "
+                  "where the adaptive starts), change_at, clutter_after, learning_rate, ...; an unknown name lists "
+                  "them all");
+  cmd->add_option("-o,--output", o->output,
+                  "Directory for record.json, learning.svg (Figure 5, all three systems) and run.svg (Figure 4)");
+  cmd->add_flag("--json", o->json, "Print the record as one flat JSON object");
+  cmd->add_flag("--force", o->force, "Overwrite existing output files");
+  cmd->callback([o, &exit_code] { exit_code = run_sins_command(*o); });
+}
+
+}  // namespace amp::cli
