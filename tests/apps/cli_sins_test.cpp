@@ -166,9 +166,11 @@ TEST_F(CliErrors, SinsSystemsMeetTheSameWorlds) {
 }
 
 // The command drives exactly nav::run_sequence's worlds (same world draws, same robot stream),
-// also across a change of clutter.
+// also across a change of clutter, with every setting passed on (stall_exploration included).
 TEST_F(CliErrors, SinsMatchesRunSequence) {
-  const RunResult r = run(kQuick + " --param change_at=2 --param clutter_after=0.35 --param noise_gain=0.8 -o out");
+  const RunResult r = run(kQuick +
+                          " --param change_at=2 --param clutter_after=0.35 --param noise_gain=0.8 "
+                          "--param stall_exploration=0.7 -o out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json record = nlohmann::json::parse(read_file(dir_ / "out" / "record.json"));
 
@@ -177,9 +179,10 @@ TEST_F(CliErrors, SinsMatchesRunSequence) {
   settings.step_limit = 200;
   settings.change_at = 2;
   settings.clutter_after = 0.35;
+  settings.stall_exploration = 0.7;
   amp::nav::SchemaParameters initial = amp::nav::SchemaParameters::middle();
   initial.noise_gain = 0.8;
-  const auto policy = amp::nav::make_parameter_policy("adaptive", amp::learn::CaseSettings{}, initial);
+  const auto policy = amp::nav::make_parameter_policy("adaptive", amp::learn::CaseSettings{}, initial, 0.7);
   const amp::nav::SequenceOutcome expected = amp::nav::run_sequence(*policy, settings, 3);
   ASSERT_EQ(record.at("world_outcomes").size(), expected.worlds.size());
   for (std::size_t i = 0; i < expected.worlds.size(); ++i) {

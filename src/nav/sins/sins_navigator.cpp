@@ -27,7 +27,7 @@ SinsNavigator::SinsNavigator(std::string system, SinsSettings settings, SchemaPa
   settings_.validate();
   initial_.validate();
   cases_.validate();
-  make_parameter_policy(system_, cases_, initial_);  // an unknown system fails here, not in a run
+  make_parameter_policy(system_, cases_, initial_, settings_.stall_exploration);  // an unknown system fails here, not in a run
 }
 
 SinsSettings SinsNavigator::arena_settings(const SinsSettings& settings, const NavTask& task) {
@@ -58,7 +58,7 @@ NavigationOutcome SinsNavigator::run(const NavTask& task, const core::StopCondit
   const SinsSettings settings = arena_settings(settings_, task);
   // The run's one draw: the sequence's seed (worlds and robot), so everything depends on the run's seed.
   const std::uint64_t seed = rng.next_u64();
-  std::unique_ptr<ParameterPolicy> policy = make_parameter_policy(system_, cases_, initial_);
+  std::unique_ptr<ParameterPolicy> policy = make_parameter_policy(system_, cases_, initial_, settings_.stall_exploration);
   const SequenceOutcome seq = run_sequence(*policy, settings, seed, &stop);
 
   NavigationOutcome out;

@@ -123,12 +123,12 @@ TEST(CaseBasedParameters, ThePapersRuleWithoutTheAdditions) {
 }
 
 TEST(ParameterPolicyFactory, NamesTheSystems) {
-  EXPECT_EQ(make_parameter_policy("static", {}, SchemaParameters::middle())->name(), "static");
-  EXPECT_EQ(make_parameter_policy("random", {}, SchemaParameters::middle())->name(), "random");
-  EXPECT_EQ(make_parameter_policy("adaptive", {}, SchemaParameters::middle())->name(), "adaptive");
-  EXPECT_EQ(make_parameter_policy("sins", {}, SchemaParameters::middle())->name(), "adaptive");
+  EXPECT_EQ(make_parameter_policy("static", {}, SchemaParameters::middle(), 0.3)->name(), "static");
+  EXPECT_EQ(make_parameter_policy("random", {}, SchemaParameters::middle(), 0.3)->name(), "random");
+  EXPECT_EQ(make_parameter_policy("adaptive", {}, SchemaParameters::middle(), 0.3)->name(), "adaptive");
+  EXPECT_EQ(make_parameter_policy("sins", {}, SchemaParameters::middle(), 0.3)->name(), "adaptive");
   try {
-    make_parameter_policy("greedy", {}, SchemaParameters::middle());
+    make_parameter_policy("greedy", {}, SchemaParameters::middle(), 0.3);
     FAIL();
   } catch (const ParameterError& e) {
     EXPECT_EQ(std::string(e.what()), "unknown system 'greedy' (systems: static, random, adaptive)");
@@ -136,7 +136,7 @@ TEST(ParameterPolicyFactory, NamesTheSystems) {
   EXPECT_THROW(make_parameter_policy("adaptive", {}, SchemaParameters::middle(), 1.5), ParameterError);
   learn::CaseSettings bad;
   bad.max_cases = 0;
-  EXPECT_THROW(make_parameter_policy("adaptive", bad, SchemaParameters::middle()), ParameterError);
+  EXPECT_THROW(make_parameter_policy("adaptive", bad, SchemaParameters::middle(), 0.3), ParameterError);
 }
 
 }  // namespace

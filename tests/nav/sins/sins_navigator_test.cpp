@@ -12,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "amp/core/error.hpp"
+#include "amp/core/rng.hpp"
+#include "amp/nav/sins/parameter_policy.hpp"
+#include "amp/nav/sins/sins_run.hpp"
 #include "amp/nav/navigator_catalog.hpp"
 #include "support/bundled_problems.hpp"
 
@@ -62,6 +65,30 @@ TEST(SinsNavigator, SameSeedGivesTheSameRecord) {
   }
   EXPECT_GE(execute_navigation(arena, "sins", kSmall, 7, kNoTimeLimit).record.extra.at("cases"), 1.0);
   EXPECT_EQ(execute_navigation(arena, "static", kSmall, 7, kNoTimeLimit).record.extra.at("cases"), 0.0);
+}
+
+// A run is run_sequence with the run's settings (every one passed on) and the first draw of
+// Rng(seed) as the sequence's seed.
+TEST(SinsNavigator, ARunIsTheSequenceWithItsSettings) {
+  const world::Problem& arena = test::bundled_problem("sins-arena.yaml");
+  core::ParamMap params = kSmall;
+  params.emplace("stall_exploration", core::ParamValue(0.8));
+  params.emplace("control_interval", core::ParamValue(6.0));
+  params.emplace("goal_gain", core::ParamValue(1.5));
+  const NavigationOutcome got = execute_navigation(arena, "sins", params, 11, kNoTimeLimit);
+  SinsSettings s;
+  s.worlds = 3;
+  s.step_limit = 200;
+  s.stall_exploration = 0.8;
+  s.control_interval = 6;
+  SchemaParameters initial = SchemaParameters::middle();
+  initial.goal_gain = 1.5;
+  CaseBasedParameters policy(learn::CaseSettings{}, initial, 0.8);
+  const SequenceOutcome expected = run_sequence(policy, s, core::Rng(11).next_u64());
+  const Estimators e = estimate(expected.worlds, expected.worlds.size());
+  EXPECT_EQ(got.record.extra.at("steps_mean"), e.steps_mean);
+  EXPECT_EQ(got.record.extra.at("distance_mean"), e.distance_mean);
+  EXPECT_EQ(got.record.extra.at("cases"), expected.cases);
 }
 
 TEST(SinsNavigator, StopFiringEndsTheSequenceAsATimeout) {

@@ -97,7 +97,7 @@ TEST(SinsRunWorld, NeverPassesThroughAnObstacleAndReachesWhatItSays) {
   s.step_limit = 400;
   s.worlds = 6;
   for (const char* system : {"static", "random", "adaptive"}) {
-    auto policy = make_parameter_policy(system, {}, SchemaParameters::middle());
+    auto policy = make_parameter_policy(system, {}, SchemaParameters::middle(), 0.3);
     ClutterWorldSequence sequence(17, s.world);
     core::Rng rng(3);
     for (int i = 0; i < s.worlds; ++i) {
@@ -128,7 +128,7 @@ TEST(SinsRunSequence, TheSameSeedGivesTheSameRunAndEverySystemTheSameWorlds) {
   s.worlds = 5;
   s.step_limit = 300;
   auto run = [&](const char* system) {
-    auto policy = make_parameter_policy(system, {}, SchemaParameters::middle());
+    auto policy = make_parameter_policy(system, {}, SchemaParameters::middle(), 0.3);
     return run_sequence(*policy, s, 42);
   };
   const SequenceOutcome a = run("adaptive"), b = run("adaptive"), st = run("static");

@@ -98,9 +98,9 @@ class CaseBasedParameters final : public ParameterPolicy {
 };
 
 // The system by name: "static" (StaticParameters(initial)), "random", or "adaptive" (also "sins":
-// CaseBasedParameters(cases, initial)). Throws ParameterError naming the choices for another name.
+// CaseBasedParameters(cases, initial, stall_exploration), which SinsSettings carries). Throws ParameterError naming the choices for another name.
 std::unique_ptr<ParameterPolicy> make_parameter_policy(
     const std::string& system, const learn::CaseSettings& cases, const SchemaParameters& initial,
-    double stall_exploration = CaseBasedParameters::kStallExploration);
+    double stall_exploration);
 
 }  // namespace amp::nav
