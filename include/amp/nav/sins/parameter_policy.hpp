@@ -78,7 +78,7 @@ class CaseBasedParameters final : public ParameterPolicy {
   // Throws ParameterError for bad settings or parameters, or stall_exploration outside [0, 1].
   explicit CaseBasedParameters(learn::CaseSettings settings = {}, SchemaParameters initial = SchemaParameters::middle(),
                                double stall_exploration = kStallExploration);
-  static constexpr double kStallExploration = 0.3;
+  static constexpr double kStallExploration = 0.5;
   std::string_view name() const override { return "adaptive"; }
   SchemaParameters begin_world(core::Rng& rng) override;
   SchemaParameters end_interval(const learn::CaseInputs& inputs, core::Rng& rng) override;

@@ -31,7 +31,7 @@ struct SinsSettings {
   int change_at = 0;            // from this world on the clutter is clutter_after (0: no change)
   double clutter_after = 0.5;
   // The adaptive system's least exploration when stalled (CaseBasedParameters; 0: the paper's).
-  double stall_exploration = 0.3;
+  double stall_exploration = 0.5;
   SchemaSettings motor{};
   ClutterWorldSettings world{};
 
