@@ -10,20 +10,16 @@
 #include "amp/viz/world_layer.hpp"
 #include "caption_fit.hpp"
 #include "figure_legend.hpp"
+#include "palette.hpp"
 #include "world_bounds.hpp"
 
 namespace amp::viz {
 
 namespace {
 
-constexpr const char* kText = "#1f2933";
-constexpr const char* kAxisColor = "#52606d";
-constexpr const char* kGridColor = "#e4e7eb";
-constexpr const char* kPathColor = "#2563eb";
-constexpr const char* kStartColor = "#1b9e77";
-constexpr const char* kGoalColor = "#d95f02";
+using namespace palette;  // the shared colours, unqualified like the local ones
+
 constexpr const char* kTraceColor = "#c026d3";  // magenta: apart from the path's blue and the ends' colours
-constexpr const char* kStopColor = "#b91c1c";
 // One colour per velocity profile, in order (Tableau 10's first ones).
 constexpr const char* kProfileColors[] = {"#4e79a7", "#e15759", "#59a14f", "#f28e2b", "#b07aa1"};
 constexpr int kMarginPx = 28;

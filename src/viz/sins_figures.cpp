@@ -12,18 +12,14 @@
 #include "amp/viz/svg_canvas.hpp"
 #include "amp/viz/world_layer.hpp"
 #include "figure_legend.hpp"
+#include "palette.hpp"
 
 namespace amp::viz {
 
 namespace {
 
-constexpr const char* kText = "#1f2933";
-constexpr const char* kAxisColor = "#52606d";
-constexpr const char* kGridColor = "#e4e7eb";
-constexpr const char* kPathColor = "#2563eb";
-constexpr const char* kStartColor = "#1b9e77";
-constexpr const char* kGoalColor = "#d95f02";
-constexpr const char* kStopColor = "#b91c1c";
+using namespace palette;  // the shared colours, unqualified like the local ones
+
 // The four schema parameters, in the order of SchemaParameters (Tableau 10's).
 constexpr const char* kParameterColors[] = {"#e15759", "#59a14f", "#b07aa1", "#f28e2b"};
 
