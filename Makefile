@@ -4,7 +4,7 @@ SAN_BUILD ?= build-sanitize
 JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 
-.PHONY: all deps build demo test bench sanitize clean
+.PHONY: all deps build demo test bench sanitize install-check clean
 
 all: build
 
@@ -22,6 +22,11 @@ demo: build
 test: DEPS_FLAGS = --test
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+# `cmake --install` into a temporary prefix: every installed header compiles alone, and
+# examples/plan_a_problem builds against find_package(amp) and solves a problem.
+install-check: build
+	@bash scripts/check-install.sh $(BUILD)
 
 bench: build
 	@for b in $(BUILD)/benchmarks/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2 || exit 1; done

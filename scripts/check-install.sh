@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs the build tree into a temporary prefix, checks that every installed header compiles on
+# its own against that prefix alone (no header may need one that is not installed), then builds and
+# runs examples/plan_a_problem against the installed package. Usage: scripts/check-install.sh [BUILD]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build}"
+prefix="$(mktemp -d)"
+trap 'rm -rf "$prefix"' EXIT
+cmake --install "$build" --prefix "$prefix" >/dev/null
+headers=$(cd "$prefix/include" && find amp -name '*.hpp' | sort)
+echo "check-install: $(echo "$headers" | wc -l) headers installed in $prefix"
+echo "$headers" | xargs -P "$(nproc)" -I{} sh -c \
+  'echo "#include <{}>" | g++ -std=c++20 -fsyntax-only -x c++ -I"$0/include" -I/usr/include/eigen3 - \
+     || { echo "check-install: {} does not compile alone against the install prefix"; exit 255; }' "$prefix"
+cmake -S examples/plan_a_problem -B "$prefix/example" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$prefix/example" >/dev/null
+"$prefix/example/plan_a_problem" problems/walls.yaml | grep -q 'status *solved'
+echo "check-install: examples/plan_a_problem found amp::amp in the prefix and solved problems/walls.yaml"
