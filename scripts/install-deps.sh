@@ -12,7 +12,7 @@ done
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libfcl-dev libccd-dev libassimp-dev libcgal-dev libgmp-dev libmpfr-dev
-  libboost-dev libboost-math-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev
+  libboost-dev libboost-math-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
 )

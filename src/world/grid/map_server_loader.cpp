@@ -85,7 +85,9 @@ OccupancyGrid grid_from_image(const PgmImage& image, const MapServerInfo& info) 
       const double occ = (kFullScale - color) / kFullScale;
       const CellState s = classify(occ, info);
       grid.set_state(cx, cy, s);
-      if (s == CellState::kUnknown && info.mode == MapMode::kScale) {
+      const std::size_t i = static_cast<std::size_t>(row) * image.width + cx;
+      const bool transparent = !image.transparent.empty() && image.transparent[i] != 0;
+      if (s == CellState::kUnknown && info.mode == MapMode::kScale && !transparent) {
         const double ratio = (occ - info.free_thresh) / (info.occupied_thresh - info.free_thresh);
         grid.set_value(cx, cy, static_cast<std::int8_t>(1 + static_cast<int>(kScaleSpan * ratio)));
       }
@@ -96,7 +98,7 @@ OccupancyGrid grid_from_image(const PgmImage& image, const MapServerInfo& info) 
 
 OccupancyGrid load_map_server(const std::filesystem::path& yaml_file) {
   const MapServerInfo info = read_map_server_yaml(yaml_file);
-  return grid_from_image(read_pgm(info.image), info);
+  return grid_from_image(read_map_image(info.image, info.mode), info);
 }
 
 }  // namespace amp::world
