@@ -15,6 +15,7 @@
 #include "amp/core/parameters.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
+#include "problem_input.hpp"
 #include "commands.hpp"
 #include "explore_run.hpp"
 
@@ -24,6 +25,8 @@ namespace {
 
 struct ExploreOptions {
   std::string problem;
+  MapQuery map;                  // with a map_server YAML as the problem
+  const CLI::App* cmd = nullptr;  // to tell which options were given
   long steps = nav::PgcsRunSettings{}.steps;
   int max_clusters = learn::PgcsSettings{}.max_clusters;
   std::uint64_t seed = 1;
@@ -123,7 +126,7 @@ int run_explore(const ExploreOptions& o) {
   }
   if (!o.output.empty()) check_explore_dir(o.output, o.force, "-o");
   ExploreSetup setup = read_setup(o);
-  const world::Problem problem = world::load_problem(o.problem);
+  const world::Problem problem = load_problem_input(o.problem, o.map, false, *o.cmd);
   setup.progress = progress_bar();
   const ExploreResult result = run_exploration(problem, setup);
   if (o.json) {
@@ -149,7 +152,7 @@ void add_explore_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ExploreOptions>();
   CLI::App* cmd = app.add_subcommand("explore", "PGCS exploration of a 2-D world by a disc robot, then queries "
                                                 "on the learned graph; prints the record, draws Figure 1");
-  cmd->add_option("problem", o->problem, "Problem file (2-D world, disc robot; exploration starts at its start)")
+  cmd->add_option("problem", o->problem, "Problem file (2-D world, disc robot; exploration starts at its start), or a ROS map_server YAML with --start")
       ->required();
   o->named.emplace_back("steps", cmd->add_option("--steps", o->steps, "Exploration steps [" + std::to_string(nav::PgcsRunSettings{}.steps) + "]")
                                      ->check(positive_integer()));
@@ -176,6 +179,8 @@ void add_explore_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", o->output, "Directory for figure1.svg, curves.svg, queries.svg, record.json");
   cmd->add_flag("--json", o->json, "Print the record as one flat JSON object");
   cmd->add_flag("--force", o->force, "Overwrite existing output files");
+  add_map_query_options(cmd, o->map);
+  o->cmd = cmd;
   cmd->callback([o, &exit_code] { exit_code = run_explore(*o); });
 }
 

@@ -12,6 +12,7 @@
 #include "amp/nav/navigator_catalog.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
+#include "problem_input.hpp"
 #include "commands.hpp"
 #include "navigate_run.hpp"
 
@@ -21,6 +22,8 @@ namespace {
 
 struct NavigateOptions {
   std::string problem;
+  MapQuery map;                  // with a map_server YAML as the problem
+  const CLI::App* cmd = nullptr;  // to tell which options were given
   std::string method = "policy";
   int runs = 50;
   std::uint64_t seed = 1;
@@ -55,7 +58,7 @@ int run_navigate(const NavigateOptions& o) {
     }
     if (!known) throw ParameterError("--param: unknown parameter '" + name + "' (`amp bench --list` shows them)");
   }
-  const world::Problem problem = world::load_problem(o.problem);
+  const world::Problem problem = load_problem_input(o.problem, o.map, true, *o.cmd);
   // The other method runs beside the chosen one on the same seeds: Table 2 and Figure 4 compare both.
   const NavigateResult r = run_both_methods(problem, setup);
   const MethodRuns& chosen = method == kPolicyMethod ? r.policy : r.dwa;
@@ -79,7 +82,7 @@ void add_navigate_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<NavigateOptions>();
   CLI::App* cmd = app.add_subcommand("navigate", "Policy search seeded by a value function, or the Dynamic Window "
                                                  "Approach, driven on a noisy unicycle over many seeds");
-  cmd->add_option("problem", o->problem, "Problem file (a map world, disc robot: its start and goal)")->required();
+  cmd->add_option("problem", o->problem, "Problem file (a map world, disc robot: its start and goal), or a ROS map_server YAML with --start and --goal")->required();
   cmd->add_option("--method", o->method, "policy (policy search) or dwa [policy]")->check(CLI::IsMember({"policy", "dwa"}));
   cmd->add_option("--runs", o->runs, "Noisy runs, one seed each [50]")->check(positive_integer());
   cmd->add_option("--seed", o->seed, "Random seed (each run's noise is drawn from a stream of it) [1]")->check(unsigned_integer());
@@ -87,6 +90,8 @@ void add_navigate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", o->output, "Directory for record.json, phases.svg (Figure 3) and velocity.svg (Figure 4)");
   cmd->add_flag("--json", o->json, "Print the record as one flat JSON object");
   cmd->add_flag("--force", o->force, "Overwrite existing output files");
+  add_map_query_options(cmd, o->map);
+  o->cmd = cmd;
   cmd->callback([o, &exit_code] { exit_code = run_navigate(*o); });
 }
 

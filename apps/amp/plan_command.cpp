@@ -10,6 +10,7 @@
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
+#include "problem_input.hpp"
 #include "commands.hpp"
 
 namespace amp::cli {
@@ -18,6 +19,8 @@ namespace {
 
 struct PlanOptions {
   std::string problem;
+  MapQuery map;                  // with a map_server YAML as the problem
+  const CLI::App* cmd = nullptr;  // to tell which options were given
   std::string planner;
   std::vector<std::string> params;
   std::uint64_t seed = 1;
@@ -42,7 +45,7 @@ int run_plan(const PlanOptions& o) {
   if (!o.out.empty() && !o.svg.empty() && resolved(o.out) == resolved(o.svg)) {
     throw Error("--svg: '" + o.svg + "' is the --out file too; the picture would replace the path");
   }
-  world::Problem problem = world::load_problem(o.problem);
+  world::Problem problem = load_problem_input(o.problem, o.map, true, *o.cmd);
   if (!o.edge_check.empty()) problem.defaults.edge_check = core::parse_edge_check_mode(o.edge_check);
   const std::string planner = resolve_planner(o.planner, problem);
   const double time_limit = o.time_limit > 0.0 ? o.time_limit : problem.defaults.time_limit_s;
@@ -90,7 +93,7 @@ int run_plan(const PlanOptions& o) {
 void add_plan_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<PlanOptions>();
   CLI::App* cmd = app.add_subcommand("plan", "Solve one problem with one planner; print the run record");
-  cmd->add_option("problem", o->problem, "Problem file (.yaml or OMPL.app .cfg)")->required();
+  cmd->add_option("problem", o->problem, "Problem file (.yaml or OMPL.app .cfg), or a ROS map_server YAML with --start and --goal")->required();
   cmd->add_option("--planner", o->planner, "Planner name (default: the problem's, else prm)");
   cmd->add_option("--param", o->params, "Planner parameter name=value (repeatable), e.g. --param k=15");
   cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());
@@ -113,6 +116,8 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--roadmap", o->roadmap, "With --svg: draw the roadmap too");
   cmd->add_flag("--json", o->json, "Print the run record as JSON");
   cmd->add_flag("--force", o->force, "Overwrite existing output files");
+  add_map_query_options(cmd, o->map);
+  o->cmd = cmd;
   cmd->callback([o, &exit_code] { exit_code = run_plan(*o); });
 }
 

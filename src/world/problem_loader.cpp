@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 #include "amp/core/edge_steps.hpp"
 #include "amp/core/error.hpp"
@@ -40,8 +41,7 @@ State read_state(const YamlFields& f, const core::Space& space) {
   return s;
 }
 
-Problem load_yaml_problem(const std::filesystem::path& file) {
-  const YamlFields root(load_yaml_file(file), file, "");
+Problem yaml_problem(const YamlFields& root, const std::filesystem::path& file) {
   if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
   // `events:` (obstacles that appear or vanish while a robot drives) belongs to the nav module's
   // simulator, which reads it itself (nav::load_events); planners ignore it.
@@ -103,6 +103,10 @@ Problem load_yaml_problem(const std::filesystem::path& file) {
   return p;
 }
 
+Problem load_yaml_problem(const std::filesystem::path& file) {
+  return yaml_problem(YamlFields(load_yaml_file(file), file, ""), file);
+}
+
 std::string seed_name(const Problem& p, std::size_t i) {
   if (p.seeds.size() == 2) return i == 0 ? "start" : "goal";
   return "seeds[" + std::to_string(i) + "]";
@@ -141,6 +145,37 @@ Problem load_problem(const std::filesystem::path& file) {
   } else {
     throw FileError(file.string() + ": unknown problem format '" + ext + "' (expected .yaml, .yml or .cfg)");
   }
+  validate_seeds(p);
+  return p;
+}
+
+bool is_map_server_yaml(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".yaml" && ext != ".yml") return false;
+  try {
+    const YAML::Node root = load_yaml_file(file);
+    return root.IsMap() && root["image"] && root["resolution"] && !root["world"] && !root["robot"];
+  } catch (const std::exception&) {
+    return false;  // not readable as YAML: load_problem will say why
+  }
+}
+
+Problem load_map_problem(const std::filesystem::path& map_yaml, const Eigen::Vector2d& start,
+                         const Eigen::Vector2d& goal, double radius) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(map_yaml, ec)) throw FileError(map_yaml.string() + ": no such file");
+  // The problem file a user would write for the map, built in memory.
+  YAML::Node root;
+  root["name"] = map_yaml.stem().string();
+  root["world"]["map"] = std::filesystem::absolute(map_yaml).string();
+  root["robot"]["type"] = "disc";
+  root["robot"]["radius"] = radius;
+  for (const auto& [key, v] : {std::pair{"start", start}, std::pair{"goal", goal}}) {
+    root[key].push_back(v.x());
+    root[key].push_back(v.y());
+  }
+  Problem p = yaml_problem(YamlFields(root, map_yaml, ""), map_yaml);
   validate_seeds(p);
   return p;
 }

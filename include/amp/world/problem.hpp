@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "amp/core/edge_check_mode.hpp"
 #include "amp/core/space.hpp"
 #include "amp/world/environment.hpp"
@@ -51,5 +53,14 @@ struct LoadedWorld {
 // Throws FileError naming the file and field on any fault, including start/goal out of bounds or
 // in collision.
 Problem load_problem(const std::filesystem::path& file);
+
+// Whether `file` is a ROS map_server YAML (a mapping with `image` and `resolution`, and neither
+// `world` nor `robot`) rather than a problem file.
+bool is_map_server_yaml(const std::filesystem::path& file);
+// The problem a map_server map makes for a disc robot of `radius` going from start to goal (what a
+// problem file with `world: {map: ...}` would give). Throws FileError as load_problem does, naming
+// the map file, for a bad map, radius, or a start or goal that is outside or not free.
+Problem load_map_problem(const std::filesystem::path& map_yaml, const Eigen::Vector2d& start,
+                         const Eigen::Vector2d& goal, double radius);
 
 }  // namespace amp::world

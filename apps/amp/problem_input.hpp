@@ -1,0 +1,27 @@
+#pragma once
+// What `amp plan`, `amp explore` and `amp navigate` take as PROBLEM: a problem file, or a ROS
+// map_server YAML with the query on the command line (a user with only a ROS map writes no file).
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "amp/world/problem.hpp"
+
+namespace amp::cli {
+
+struct MapQuery {
+  std::vector<double> start, goal;  // X Y each, or empty
+  double radius = 0.22;             // m: Nav2's TurtleBot3 robot_radius
+};
+
+// --start X Y, --goal X Y and --radius R on `cmd`.
+void add_map_query_options(CLI::App* cmd, MapQuery& q);
+
+// The problem in `file`; for a map_server YAML, world::load_map_problem with the query's start, goal
+// (the start when !needs_goal and no --goal) and radius. Throws amp::Error naming the flag for a map
+// without --start (or --goal, when needed), or for --start/--goal/--radius given with a problem
+// file, which carries its own.
+world::Problem load_problem_input(const std::string& file, const MapQuery& q, bool needs_goal, const CLI::App& cmd);
+
+}  // namespace amp::cli
