@@ -36,7 +36,7 @@ bench: build
 # line); runs every test but the MPI one, whose leak reports come from inside Open MPI itself.
 sanitize: deps
 	@cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
-	  -DAMP_SANITIZE=ON -DAMP_BUILD_BENCHMARKS=OFF >/dev/null
+	  -DAMP_SANITIZE=ON -DAMP_BUILD_BENCHMARKS=OFF -DAMP_BUILD_PYTHON=OFF >/dev/null
 	@cmake --build $(SAN_BUILD) -j$(JOBS)
 	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j$(JOBS) -E '^apps[.]mpi_bench_equals_single_process$$'

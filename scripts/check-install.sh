@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the build tree into a temporary prefix, checks that every installed header compiles on
 # its own against that prefix alone (no header may need one that is not installed), then builds and
-# runs examples/plan_a_problem against the installed package. Usage: scripts/check-install.sh [BUILD]
+# runs examples/plan_a_problem against the installed package, and imports the Python module from it. Usage: scripts/check-install.sh [BUILD]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
@@ -17,3 +17,7 @@ cmake -S examples/plan_a_problem -B "$prefix/example" -DCMAKE_PREFIX_PATH="$pref
 cmake --build "$prefix/example" >/dev/null
 "$prefix/example/plan_a_problem" problems/walls.yaml | grep -q 'status *solved'
 echo "check-install: examples/plan_a_problem found amp::amp in the prefix and solved problems/walls.yaml"
+if [ -d "$prefix/lib/python3/dist-packages" ]; then
+  (cd "$prefix" && PYTHONPATH="$prefix/lib/python3/dist-packages" python3 -c "import amp; assert 'prm' in amp.planners()")
+  echo "check-install: python3 -c 'import amp' works from the prefix"
+fi

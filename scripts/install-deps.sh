@@ -13,11 +13,12 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libfcl-dev libccd-dev libassimp-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-math-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev libpng-dev
+  pybind11-dev python3-dev python3-numpy
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
 )
 if [ "$with_test" -eq 1 ]; then
-  packages+=(libompl-dev)
+  packages+=(libompl-dev python3-pytest)
 fi
 missing=()
 for p in "${packages[@]}"; do

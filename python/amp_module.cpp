@@ -1,0 +1,142 @@
+// `import amp`: AMP from Python (pybind11). Problems, planner runs, navigation runs and benchmark
+// experiments, with AMP's records as dicts and paths as NumPy arrays when NumPy is present (lists of
+// states otherwise). AMP's errors arrive as amp.Error (a RuntimeError) with the same one-line message.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "amp/bench/bench_runner.hpp"
+#include "amp/bench/experiment.hpp"
+#include "amp/bench/record_format.hpp"
+#include "amp/core/error.hpp"
+#include "amp/core/version.hpp"
+#include "amp/nav/navigator_catalog.hpp"
+#include "amp/roadmap/catalog/planner_registry.hpp"
+#include "amp/roadmap/run.hpp"
+#include "amp/world/problem.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// A record as a Python dict (through its JSON form, so that Python sees what `amp plan --json` prints).
+py::object to_dict(const amp::core::RunRecord& r) {
+  return py::module_::import("json").attr("loads")(amp::bench::to_json(r).dump());
+}
+
+// States as rows: a NumPy array when NumPy imports, else a list of lists.
+py::object states(const std::vector<std::vector<double>>& rows) {
+  py::list list;
+  for (const auto& row : rows) list.append(py::cast(row));
+  try {
+    return py::module_::import("numpy").attr("array")(list);
+  } catch (const py::error_already_set&) {
+    return list;
+  }
+}
+
+std::vector<double> as_vector(const amp::State& s) { return std::vector<double>(s.data(), s.data() + s.size()); }
+
+amp::core::ParamMap params_of(const py::dict& params) {
+  amp::core::ParamMap out;
+  for (const auto& [key, value] : params) {
+    const std::string name = py::str(key);
+    if (py::isinstance<py::bool_>(value)) {
+      out.emplace(name, amp::core::ParamValue(std::string(value.cast<bool>() ? "true" : "false")));
+    } else if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) {
+      out.emplace(name, amp::core::ParamValue(value.cast<double>()));
+    } else {
+      out.emplace(name, amp::core::ParamValue(std::string(py::str(value))));
+    }
+  }
+  return out;
+}
+
+py::tuple plan(const amp::world::Problem& problem, const std::string& planner, std::uint64_t seed,
+               const py::dict& params, std::optional<double> time_limit, std::optional<std::size_t> node_limit) {
+  const amp::core::ParamMap p = params_of(params);
+  amp::roadmap::RunOutcome run;
+  {
+    py::gil_scoped_release free;  // a run may take seconds: let other Python threads go on
+    run = amp::roadmap::execute_run(problem, planner.empty() ? problem.defaults.planner : planner, p, seed,
+                                    time_limit.value_or(problem.defaults.time_limit_s),
+                                    node_limit.value_or(problem.defaults.node_limit));
+  }
+  std::vector<std::vector<double>> path;
+  for (const amp::State& s : run.path) path.push_back(as_vector(s));
+  return py::make_tuple(to_dict(run.record), states(path));
+}
+
+py::tuple navigate(const amp::world::Problem& problem, const std::string& method, std::uint64_t seed,
+                   const py::dict& params, double time_limit) {
+  const amp::core::ParamMap p = params_of(params);
+  amp::nav::NavigationOutcome run;
+  {
+    py::gil_scoped_release free;
+    run = amp::nav::execute_navigation(problem, method, p, seed, time_limit);
+  }
+  std::vector<std::vector<double>> trace;
+  for (const Eigen::Vector2d& q : run.trace) trace.push_back({q.x(), q.y()});
+  return py::make_tuple(to_dict(run.record), states(trace));
+}
+
+py::dict bench(const std::string& experiment, const std::string& out, int threads, bool force) {
+  const amp::bench::Experiment e = amp::bench::load_experiment(experiment);
+  amp::bench::BenchOptions o;
+  o.out_dir = out;
+  o.threads = threads;
+  o.force = force;
+  amp::bench::BenchResult r;
+  {
+    py::gil_scoped_release free;
+    r = amp::bench::run_experiment(e, o);
+  }
+  py::dict d;
+  d["runs"] = r.written;
+  d["out"] = out;
+  d["runs_csv"] = out + "/runs.csv";
+  d["summary"] = py::module_::import("json").attr("load")(
+      py::module_::import("builtins").attr("open")(out + "/summary.json"));
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(amp, m) {
+  m.doc() = "AMP, adaptive motion planning: problems, planners, navigation methods and benchmarks";
+  m.attr("__version__") = std::string(amp::core::kVersion);
+  static py::exception<amp::Error> error(m, "Error", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const amp::Error& e) {
+      error(e.what());
+    }
+  });
+
+  py::class_<amp::world::Problem>(m, "Problem", "A loaded planning problem (amp.load_problem)")
+      .def_readonly("name", &amp::world::Problem::name)
+      .def_property_readonly("file", [](const amp::world::Problem& p) { return p.file.string(); })
+      .def_property_readonly("dimension", [](const amp::world::Problem& p) { return p.space->dimension(); })
+      .def_property_readonly("start", [](const amp::world::Problem& p) { return as_vector(p.start()); })
+      .def_property_readonly("goal", [](const amp::world::Problem& p) { return as_vector(p.goal()); })
+      .def("__repr__", [](const amp::world::Problem& p) { return "<amp.Problem '" + p.name + "'>"; });
+
+  m.def("load_problem", [](const std::string& path) { return amp::world::load_problem(path); }, py::arg("path"),
+        "Loads a problem file (YAML or OMPL.app .cfg); raises amp.Error naming the file and field");
+  m.def("plan", &plan, py::arg("problem"), py::arg("planner") = "prm", py::arg("seed") = 1,
+        py::arg("params") = py::dict(), py::arg("time_limit") = py::none(), py::arg("node_limit") = py::none(),
+        "Runs a planner once: (record as a dict, path as an array of states; empty when unsolved)");
+  m.def("navigate", &navigate, py::arg("problem"), py::arg("method"), py::arg("seed") = 1,
+        py::arg("params") = py::dict(), py::arg("time_limit") = 600.0,
+        "Runs a navigation method once (pgcs, policy-search, dwa, static, random, sins): (record, driven trace)");
+  m.def("bench", &bench, py::arg("experiment"), py::arg("out"), py::arg("threads") = 0, py::arg("force") = false,
+        "Runs an experiment file as `amp bench` does; returns the run count and summary.json as a dict");
+  m.def("planners", [] { return amp::roadmap::builtin_planners().names(); }, "The planners' names");
+  m.def("navigation_methods", [] { return amp::nav::builtin_navigators().names(); }, "The navigation methods' names");
+}

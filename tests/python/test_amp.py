@@ -1,0 +1,61 @@
+"""The Python module: a problem loaded, planned and checked; errors as amp.Error; bench; navigation."""
+import json
+import os
+import pathlib
+
+import pytest
+
+import amp
+
+PROBLEMS = pathlib.Path(os.environ["AMP_SOURCE_DIR"]) / "problems"
+
+
+def test_a_plan_joins_start_and_goal_and_repeats_for_the_same_seed():
+    problem = amp.load_problem(str(PROBLEMS / "walls.yaml"))
+    assert problem.name == "Walls"
+    assert problem.dimension == 3
+    record, path = amp.plan(problem, planner="prm", seed=3)
+    assert record["status"] == "solved"
+    assert len(path) == record["path_states"]
+    assert list(path[0]) == pytest.approx(problem.start)
+    assert list(path[-1]) == pytest.approx(problem.goal)
+    again, path2 = amp.plan(problem, planner="prm", seed=3)
+    assert again["path_length"] == record["path_length"]
+    assert [list(s) for s in path2] == [list(s) for s in path]
+
+
+def test_params_and_limits_reach_the_planner():
+    problem = amp.load_problem(str(PROBLEMS / "maze.yaml"))
+    record, _ = amp.plan(problem, planner="prm", seed=1, params={"k": 5}, node_limit=50, time_limit=5.0)
+    assert record["nodes"] <= 50
+
+
+def test_errors_are_amp_errors_with_the_one_line_message():
+    with pytest.raises(amp.Error, match="no_such_problem.yaml: no such file"):
+        amp.load_problem("no_such_problem.yaml")
+    problem = amp.load_problem(str(PROBLEMS / "walls.yaml"))
+    with pytest.raises(amp.Error, match="unknown planner 'nope'"):
+        amp.plan(problem, planner="nope")
+    with pytest.raises(RuntimeError):  # amp.Error is a RuntimeError
+        amp.plan(problem, params={"k": -3})
+
+
+def test_navigation_methods_run_and_report():
+    assert "sins" in amp.navigation_methods() and "prm" in amp.planners()
+    arena = amp.load_problem(str(PROBLEMS / "sins-arena.yaml"))
+    record, _ = amp.navigate(arena, "sins", seed=2, params={"worlds": 2, "step_limit": 100})
+    assert record["status"] == "solved"
+    assert record["extra"]["worlds"] == 2
+
+
+def test_bench_writes_the_outputs(tmp_path):
+    experiment = tmp_path / "tiny.yaml"
+    experiment.write_text(
+        "name: tiny\nseed: 1\nruns: 2\ntime_limit: 5\nproblems:\n  - %s\nplanners:\n  - prm\n"
+        % (PROBLEMS / "walls.yaml")
+    )
+    result = amp.bench(str(experiment), out=str(tmp_path / "out"), threads=1)
+    assert result["runs"] == 2
+    assert (tmp_path / "out" / "runs.csv").exists()
+    assert result["summary"]["experiment"]["name"] == "tiny"
+    json.dumps(result["summary"])  # plain Python values all the way down
