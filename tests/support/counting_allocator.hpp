@@ -1,8 +1,8 @@
 #pragma once
-// Replaces global operator new / delete with a counting pair, for tests that prove a hot loop
-// allocates nothing. Include it in exactly one translation unit of a test executable (each test
-// file is its own executable here). allocations() counts every allocation while counting_enabled
-// is true (the default), so a test may switch it off around set-up.
+// Replaces global operator new / delete (the single-object forms) with a counting pair, for tests
+// that prove a hot loop allocates nothing. Include it in exactly one translation unit of a test
+// executable (each test file is its own executable here). allocations() counts every allocation
+// while g_counting is true (the default), so a test may switch it off around set-up.
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -22,9 +22,8 @@ void* operator new(std::size_t n) {
   if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
   throw std::bad_alloc();
 }
-void* operator new[](std::size_t n) { return operator new(n); }
 void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+// The array forms are left alone: the library's call the two above, and under AddressSanitizer,
+// which replaces them too, a library built apart (FCL) would otherwise free ASan's new[] with free.
 #pragma GCC diagnostic pop
