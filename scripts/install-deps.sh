@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages AMP builds with, only those not yet installed.
-# --test adds the packages only the test suite needs (OMPL, the oracle of tests/oracle).
+# --test adds the packages only the test suite needs (OMPL, the oracle of tests/oracle; pytest);
+# --sanitize those of the sanitizer and fuzzing build (clang 14 and its libFuzzer runtime).
 set -euo pipefail
 with_test=0
+with_sanitize=0
 for arg in "$@"; do
   case "$arg" in
     --test) with_test=1 ;;
-    *) echo "usage: $0 [--test]" >&2; exit 2 ;;
+    --sanitize) with_sanitize=1 ;;
+    *) echo "usage: $0 [--test] [--sanitize]" >&2; exit 2 ;;
   esac
 done
 packages=(
@@ -19,6 +22,9 @@ packages=(
 )
 if [ "$with_test" -eq 1 ]; then
   packages+=(libompl-dev python3-pytest)
+fi
+if [ "$with_sanitize" -eq 1 ]; then
+  packages+=(clang-14 libclang-rt-14-dev llvm-14)
 fi
 missing=()
 for p in "${packages[@]}"; do

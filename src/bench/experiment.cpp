@@ -3,6 +3,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <system_error>
 #include <type_traits>
 
 #include "amp/bench/cost_metric.hpp"
@@ -203,7 +204,8 @@ Experiment load_experiment(const std::filesystem::path& file) {
     if (p.node().IsScalar()) {
       const std::filesystem::path rel = p.node().Scalar();
       ep.file = rel.is_absolute() ? rel : file.parent_path() / rel;
-      if (!std::filesystem::is_regular_file(ep.file)) p.fail("", "no such problem file '" + ep.file.string() + "'");
+      std::error_code ec;  // a name the OS refuses (too long, ...) is "no such file", not an exception
+      if (!std::filesystem::is_regular_file(ep.file, ec)) p.fail("", "no such problem file '" + ep.file.string() + "'");
     } else {
       p.allow_only({"file", "name"});
       ep.file = p.file_path("file");

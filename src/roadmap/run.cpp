@@ -37,7 +37,7 @@ double path_clearance(const core::Space& space, const world::ValidityChecker& ch
 core::ParamMap with_problem_params(const world::Problem& problem, const PlannerInfo& planner, core::ParamMap params) {
   for (const auto& [name, value] : problem.defaults.params) {
     const bool declared = std::any_of(planner.params.begin(), planner.params.end(),
-                                      [&name](const core::ParamSpec& s) { return s.name == name; });
+                                      [&key = name](const core::ParamSpec& s) { return s.name == key; });
     if (declared) params.emplace(name, value);  // emplace keeps a value the run set
   }
   return params;

@@ -142,8 +142,8 @@ void draw_strip(SvgCanvas& c, const SinsRunDrawing& d, double y0, double strip_h
   const double w = d.width;
   const std::size_t steps = d.parameters.size();
   const auto [t_lo, t_hi] = nice_range(0.0, static_cast<double>(std::max<std::size_t>(steps, 1)), AxisScale::kLinear, 6);
-  const auto at = [&](double step, double u) {
-    return Eigen::Vector2d((step - t_lo) / (t_hi - t_lo) * w, y0 + std::clamp(u, 0.0, 1.0) * strip_h);
+  const auto at = [&, lo = t_lo, hi = t_hi](double step, double u) {  // clang 14 captures no bindings
+    return Eigen::Vector2d((step - lo) / (hi - lo) * w, y0 + std::clamp(u, 0.0, 1.0) * strip_h);
   };
   c.begin_group("parameter-strip");
   for (const double u : {0.0, 0.5, 1.0}) {

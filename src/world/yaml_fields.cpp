@@ -5,6 +5,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 #include "amp/core/error.hpp"
 
@@ -169,7 +170,8 @@ std::vector<Eigen::Vector2d> YamlFields::as_points2() const {
 std::filesystem::path YamlFields::file_path(std::string_view key) const {
   const std::filesystem::path rel = string(key);
   const std::filesystem::path full = rel.is_absolute() ? rel : file_.parent_path() / rel;
-  if (!std::filesystem::is_regular_file(full)) fail(key, "no such file '" + full.string() + "'");
+  std::error_code ec;  // a name the OS refuses (too long, ...) is "no such file", not an exception
+  if (!std::filesystem::is_regular_file(full, ec)) fail(key, "no such file '" + full.string() + "'");
   return full;
 }
 

@@ -45,8 +45,12 @@ class GridCostToGo {
   }
   // Cost-to-goal field from `goal` (a cell index); every cell stays unreachable when the goal is
   // blocked. Throws ParameterError for an index outside the grid. `stop` (optional) is polled every
-  // few thousand cells; returns false when it fired (the field is then incomplete).
-  bool compute(int goal, const std::function<bool()>& stop = {});
+  // few thousand cells; returns false when it fired, or before settling a cell beyond `max_cells`
+  // (the field is then incomplete).
+  bool compute(int goal, const std::function<bool()>& stop = {},
+               std::size_t max_cells = std::numeric_limits<std::size_t>::max());
+  // Cells settled (given their final cost) by the last compute().
+  std::size_t settled() const { return settled_; }
   int goal() const { return goal_; }
   // Cost from `cell` to the goal; kUnreachable for blocked and cut-off cells.
   double distance(int cell) const { return distance_[static_cast<std::size_t>(cell)]; }
@@ -70,6 +74,7 @@ class GridCostToGo {
   Move moves_[8];
   double bucket_width_ = 1.0;
   int goal_ = -1;
+  std::size_t settled_ = 0;
   std::vector<double> distance_;
   std::vector<std::vector<std::pair<double, int>>> buckets_;  // circular, by floor(cost / bucket_width)
 };

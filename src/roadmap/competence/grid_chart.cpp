@@ -13,7 +13,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 }
 
-GridChart::GridChart(const core::Space& space, int steps) : space_(&space) {
+GridChart::GridChart(const core::Space& space, int steps) {
   if (steps < 1) throw ParameterError("grid: steps per degree of freedom must be >= 1, got " + std::to_string(steps));
   const double n = steps;
   if (const auto* joints = dynamic_cast<const core::JointSpace*>(&space)) {

@@ -82,12 +82,13 @@ PlanResult GridDp::plan(const PlanningContext& ctx, const core::StopCondition& s
       result.status = core::PlanStatus::kUnsolvable;
       break;
     }
-    if (!dp.compute(goal, [&stop] { return stop.check(0) != core::StopReason::kNone; })) {
-      result.status = status_for(stop.check(0));
+    // The settled cells are grid-dp's nodes, so the node limit bounds them exactly.
+    const bool complete = dp.compute(goal, [&stop] { return stop.check(0) != core::StopReason::kNone; }, stop.node_limit());
+    reachable = dp.settled();
+    if (!complete) {
+      result.status = dp.settled() == stop.node_limit() ? status_for(core::StopReason::kNodeLimit) : status_for(stop.check(0));
       break;
     }
-    reachable = 0;
-    for (double d : dp.distances()) reachable += d < world::GridCostToGo::kUnreachable ? 1 : 0;
     const std::vector<int> cells = dp.path(start);
     if (cells.empty()) {
       result.status = core::PlanStatus::kUnsolvable;

@@ -56,10 +56,17 @@ class PrmRun {
   }
 
   PlanResult run(core::Rng& rng) {
-    for (const State& s : ctx_.seeds) seed_ids_.push_back(insert(s, true));
     State q;
     PlanResult result;
-    for (;;) {
+    // The query's seeds count against the node limit like any vertex: a roadmap that cannot take
+    // them (a reused training roadmap already at the limit, a limit below the seed count) stops here.
+    const bool room = roadmap_->vertex_count() + ctx_.seeds.size() <= stop_.node_limit();
+    if (room) {
+      for (const State& s : ctx_.seeds) seed_ids_.push_back(insert(s, true));
+    } else {
+      result.status = status_for(core::StopReason::kNodeLimit);
+    }
+    while (room) {
       if (seeds_connected() && find_path(result.path)) {
         result.status = core::PlanStatus::kSolved;
         break;

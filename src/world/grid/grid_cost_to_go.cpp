@@ -53,12 +53,13 @@ double GridCostToGo::step_cost(int from, int to, const Move& m) const {
   return m.length * (1.0 + 0.5 * (cells_.cost[static_cast<std::size_t>(from)] + cells_.cost[static_cast<std::size_t>(to)]));
 }
 
-bool GridCostToGo::compute(int goal, const std::function<bool()>& stop) {
+bool GridCostToGo::compute(int goal, const std::function<bool()>& stop, std::size_t max_cells) {
   if (goal < 0 || static_cast<std::size_t>(goal) >= distance_.size()) {
     throw ParameterError("goal cell " + std::to_string(goal) + " is outside the " + std::to_string(cells_.width) +
                          " x " + std::to_string(cells_.height) + " grid");
   }
   goal_ = goal;
+  settled_ = 0;
   std::fill(distance_.begin(), distance_.end(), kUnreachable);
   if (cells_.free[static_cast<std::size_t>(goal)] == 0) return true;
   for (auto& b : buckets_) b.clear();
@@ -76,6 +77,8 @@ bool GridCostToGo::compute(int goal, const std::function<bool()>& stop) {
       --pending;
       if (stop && (++popped & 4095) == 0 && stop()) return false;
       if (d > distance_[static_cast<std::size_t>(cell)]) continue;  // a stale entry
+      if (settled_ == max_cells) return false;
+      ++settled_;
       const int x = cell % w, y = cell / w;
       for (const Move& m : moves_) {
         if (!legal(x, y, m)) continue;

@@ -78,7 +78,9 @@ OccupancyGrid load_movingai(const std::filesystem::path& file, double resolution
   std::string line;
   if (!r.next_line(line) || line != "map") r.fail("expected 'map', got '" + line + "'");
 
-  OccupancyGrid grid(width, height, resolution, origin);
+  // Every row is read and checked before the grid is allocated: a header over a few bytes may claim
+  // 2^30 cells. The rows held meanwhile are no larger than the file.
+  std::vector<std::string> rows;
   for (int row = 0; row < height; ++row) {
     if (!r.next_line(line)) {
       r.fail("map has " + std::to_string(row) + " rows, header says height " + std::to_string(height));
@@ -87,15 +89,22 @@ OccupancyGrid load_movingai(const std::filesystem::path& file, double resolution
       r.fail("row " + std::to_string(row) + " has " + std::to_string(line.size()) + " characters, header says width " +
              std::to_string(width));
     }
-    const int cy = height - 1 - row;  // the first text row is the largest y
     for (int cx = 0; cx < width; ++cx) {
       const char c = line[static_cast<std::size_t>(cx)];
-      if (passable(c)) continue;
-      if (!impassable(c)) {
+      if (!passable(c) && !impassable(c)) {
         r.fail("row " + std::to_string(row) + ", column " + std::to_string(cx) + ": unknown map character '" +
                std::string(1, c) + "'");
       }
-      grid.set_state(cx, cy, CellState::kOccupied);
+    }
+    rows.push_back(std::move(line));
+  }
+  OccupancyGrid grid(width, height, resolution, origin);
+  for (int row = 0; row < height; ++row) {
+    const int cy = height - 1 - row;  // the first text row is the largest y
+    for (int cx = 0; cx < width; ++cx) {
+      if (impassable(rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(cx)])) {
+        grid.set_state(cx, cy, CellState::kOccupied);
+      }
     }
   }
   // Trailing blank lines are harmless; any further map text means the height is wrong.

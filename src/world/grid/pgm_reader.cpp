@@ -78,7 +78,7 @@ class PgmParser {
     const long long w = integer("width");
     const long long h = integer("height");
     const long long maxval = integer("maxval");
-    if (w < 1 || h < 1 || w * h > kMaxPixels) {
+    if (w < 1 || h < 1 || w > kMaxPixels || h > kMaxPixels || w * h > kMaxPixels) {  // each first: no overflow
       fail("PGM size " + std::to_string(w) + "x" + std::to_string(h) + " is empty or too large");
     }
     if (maxval < 1 || maxval > kMaxMaxval) fail("PGM maxval must be in 1..65535, got " + std::to_string(maxval));
@@ -86,7 +86,6 @@ class PgmParser {
     img.height = static_cast<int>(h);
     img.maxval = static_cast<int>(maxval);
     const std::size_t n = static_cast<std::size_t>(w * h);
-    img.pixels.resize(n);
     if (binary) {
       read_binary(img, n);
     } else {
@@ -109,6 +108,7 @@ class PgmParser {
       fail("PGM raster has " + std::to_string(have) + " bytes but the header's " + std::to_string(img.width) + "x" +
            std::to_string(img.height) + " needs " + std::to_string(expected) + (have < expected ? " (truncated)" : ""));
     }
+    img.pixels.resize(n);  // only now: a short file claiming a huge size must not allocate it
     const auto* p = reinterpret_cast<const unsigned char*>(data_.data() + pos_);
     for (std::size_t i = 0; i < n; ++i) {
       // 16-bit samples are big-endian (Netpbm).
@@ -119,6 +119,14 @@ class PgmParser {
   }
 
   void read_ascii(PgmImage& img, std::size_t n) {
+    // Each sample takes a digit and a separator: a file too short for the header's size fails
+    // before the raster is allocated (a 1-kB file claiming 10^8 pixels would otherwise take seconds).
+    const std::size_t room = (data_.size() - pos_ + 1) / 2;
+    if (room < n) {
+      fail("truncated PGM: the header's " + std::to_string(img.width) + "x" + std::to_string(img.height) + " needs " +
+           std::to_string(n) + " samples, the file has room for at most " + std::to_string(room));
+    }
+    img.pixels.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       skip_space();
       if (pos_ >= data_.size()) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <system_error>
 
 #include "amp/core/error.hpp"
 #include "amp/core/joint_space.hpp"
@@ -76,7 +77,8 @@ class CfgFile {
   std::filesystem::path mesh_path(const std::string& key) const {
     const std::filesystem::path rel = text("problem", key);
     const std::filesystem::path full = rel.is_absolute() ? rel : file_.parent_path() / rel;
-    if (!std::filesystem::is_regular_file(full)) fail("problem", key, "no such file '" + full.string() + "'");
+    std::error_code ec;  // a name the OS refuses (too long, ...) is "no such file", not an exception
+    if (!std::filesystem::is_regular_file(full, ec)) fail("problem", key, "no such file '" + full.string() + "'");
     return full;
   }
   TriangleMesh mesh(const std::string& key) const {

@@ -198,6 +198,12 @@ TEST_F(MapServerTest, ImageErrorsNameFileAndValue) {
   expect_error(y, {"img.pgm", "7 bytes", "needs 6"});
   write("img.pgm", "P2\n3 2\n255\n0 255 128\n254 100\n");
   expect_error(y, {"img.pgm", "truncated", "5 samples"});
+  // Fuzzing found: a header claiming 10^8 pixels over a few bytes allocated the raster first (seconds).
+  write("img.pgm", "P2\n10000 10000\n255\n0 7\n");
+  expect_error(y, {"img.pgm", "truncated", "10000x10000", "needs 100000000 samples"});
+  // Fuzzing found: width x height overflowed a 64-bit integer (undefined behaviour) before the check.
+  write("img.pgm", "P2\n6553522555 52265535558\n255\n0\n");
+  expect_error(y, {"img.pgm", "6553522555x52265535558", "too large"});
   write("img.pgm", "P2\n3 2\n255\n0 255 128\n254 100 200 9\n");
   expect_error(y, {"img.pgm", "more samples", "9"});
   write("img.pgm", "P2\n3 2\n100\n0 255 128\n254 100 200\n");

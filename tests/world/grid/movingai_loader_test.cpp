@@ -73,6 +73,9 @@ TEST_F(MovingAiTest, ErrorsNameLineAndValue) {
   expect_error("type octile\nheight 3\nwidth 4\nmaps\n", {"line 4", "map", "maps"});
   expect_error("type octile\nheight 3\nwidth 4\n", {"map"});
   expect_error("type octile\nheight 3\nwidth 4\nmap\n....\n....\n", {"2 rows", "height 3"});
+  // Found when reviewing the readers for fuzzing: a 32768x32768 header over a few bytes allocated
+  // its 2^30 cells before reading a row.
+  expect_error("type octile\nheight 32768\nwidth 32768\nmap\n....\n", {"line 5", "4 characters", "width 32768"});
   expect_error("type octile\nheight 3\nwidth 4\nmap\n....\n.....\n....\n", {"line 6", "5 characters", "width 4"});
   expect_error("type octile\nheight 3\nwidth 4\nmap\n....\n...\n....\n", {"3 characters"});
   expect_error("type octile\nheight 3\nwidth 4\nmap\n....\n..x.\n....\n", {"line 6", "column 2", "'x'"});

@@ -93,6 +93,9 @@ TEST(SpatialYaml, ErrorsNameTheField) {
                "cone");
   expect_error("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\nworld: {obstacles: [{mesh: {file: none.obj}}]}\n"
                "robot: {type: sphere, radius: 1}\n", "none.obj");
+  // A file name longer than the OS allows is "no such file" too, not std::filesystem's exception.
+  expect_error("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\nworld: {obstacles: [{mesh: {file: " + std::string(300, 'm') +
+               ".obj}}]}\nrobot: {type: sphere, radius: 1}\n", "no such file");
   expect_error("bounds: {min: [0, 0, 0], max: [1, 0, 1]}\nrobot: {type: sphere, radius: 1}\n", "bounds");
   expect_error(kWorld + "robot: {type: scara, base: [0, 0, 0], column_height: 1, upper_arm: 1, forearm: 1, "
                         "link_radius: 0.1, slide: [0, 2], limits: [[-1, 1], [-1, 1], [-1, 1], [-1, 1]], "

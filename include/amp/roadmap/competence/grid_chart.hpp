@@ -31,7 +31,6 @@ class GridChart {
 
  private:
   enum class Axis { kLinear, kAngle, kTranslation, kRotation };
-  const core::Space* space_;
   std::vector<Axis> axis_;
   std::vector<double> step_, lo_, hi_;
   State origin_;

@@ -27,7 +27,8 @@ struct GridDpSettings {
 //
 // The path: the start, the centres of its cells, the goal; each segment is certified
 // (EdgeCertifier) before the path is returned. With more than two seeds each leg is planned in
-// turn. Deterministic (no random choice). PlanResult: `nodes` the cells the last leg's plan reached,
+// turn. Deterministic (no random choice). PlanResult: `nodes` the cells the last leg's plan settled (the node
+// limit stops the value iteration there: status node_limit),
 // `edges` the path's steps; extra: cells, free_cells, reachable_cells, grid_cost.
 class GridDp final : public Planner {
  public:

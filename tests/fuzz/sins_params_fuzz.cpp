@@ -1,0 +1,27 @@
+// What `amp sins` and the bench methods static, random and sins take: `--param name=value` items
+// (one per line here; the first byte picks the system, and whether an accepted set also runs, for at
+// most 0.05 s in the bundled arena, so that accepted extremes are driven too, not only checked).
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "amp/nav/navigator_catalog.hpp"
+#include "amp/world/problem.hpp"
+#include "cli_util.hpp"
+#include "fuzz_input.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const amp::world::Problem arena =
+      amp::world::load_problem(std::filesystem::path(AMP_SOURCE_DIR) / "problems/sins-arena.yaml");
+  if (size == 0) return 0;
+  const char* systems[] = {"static", "random", "sins"};
+  std::vector<std::string> items;
+  std::istringstream lines(std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
+  for (std::string line; std::getline(lines, line);) items.push_back(line);
+  amp::fuzz::expect_amp_errors_only([&] {
+    const amp::core::ParamMap params = amp::cli::parse_params(items);
+    amp::nav::execute_navigation(arena, systems[data[0] % 3], params, 1, (data[0] & 4) != 0 ? 0.05 : 0.0);
+  });
+  return 0;
+}
