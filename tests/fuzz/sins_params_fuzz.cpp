@@ -1,6 +1,6 @@
 // What `amp sins` and the bench methods static, random and sins take: `--param name=value` items
 // (one per line here; the first byte picks the system, and whether an accepted set also runs, for at
-// most 0.05 s in the bundled arena, so that accepted extremes are driven too, not only checked).
+// most 0.05 s in a 10 m arena, so that accepted extremes are driven too, not only checked).
 #include <memory>
 #include <sstream>
 #include <string>
@@ -13,7 +13,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const amp::world::Problem arena =
-      amp::world::load_problem(std::filesystem::path(AMP_SOURCE_DIR) / "problems/sins-arena.yaml");
+      amp::world::load_problem(std::filesystem::path(AMP_SOURCE_DIR) / "tests/fuzz/fixtures/sins-small-arena.yaml");
   if (size == 0) return 0;
   const char* systems[] = {"static", "random", "sins"};
   std::vector<std::string> items;

@@ -1,10 +1,12 @@
 #pragma once
-// Planner runs for the property tests (issue 17): drawn parameters and limits, timed runs, the same
-// runs again on two threads, and a directory for the problem files that outlives a failing test.
+// Planner runs for the property tests (issue 17): drawn cases, parameters and limits, timed runs, a
+// shard of runs checked and run again on two threads, and a directory for the problem files that
+// outlives a failing test.
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <string>
 #include <system_error>
@@ -23,6 +25,7 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "support/random_problems.hpp"  // num: run arguments print numbers as the problem files do
+#include "support/time_allowance.hpp"
 
 namespace amp::test {
 
@@ -115,6 +118,92 @@ inline std::string plan_arguments(const std::string& planner, const core::ParamM
                   " --node-limit " + std::to_string(node_limit);
   for (const auto& [k, v] : params) a += " --param " + k + "=" + v.to_string();
   return a;
+}
+
+// A case drawn from its own seed: its model, written to `file` and loaded as `amp plan` loads it,
+// and the run's parameters, seed and time limit.
+template <class Model>
+struct DrawnCase {
+  int index = 0;
+  Model model;
+  std::filesystem::path file;
+  world::Problem problem;
+  core::ParamMap params;
+  std::uint64_t seed = 0;
+  double time_limit_s = 0.0;
+};
+
+template <class Model>
+struct PlannerCase : DrawnCase<Model> {
+  std::string planner;
+  std::size_t node_limit = 0;
+
+  // Drawn in this order, which fixes every case's run for its index.
+  void draw_run(core::Rng& rng, std::size_t max_nodes) {
+    this->params = random_params(roadmap::builtin_planners().info(planner), rng);
+    this->seed = rng.next_u64() >> 16;
+    this->time_limit_s = random_time_limit(rng);
+    node_limit = random_node_limit(planner, this->params, max_nodes, rng);
+  }
+  std::string describe() const {
+    return "case " + std::to_string(this->index) + ": amp plan " + this->file.string() + " " +
+           plan_arguments(planner, this->params, this->seed, this->time_limit_s, node_limit) + "\n" + this->model.yaml;
+  }
+};
+
+// Every planner but grid-dp, which takes map worlds only.
+inline std::vector<std::string> any_world_planners() {
+  std::vector<std::string> out;
+  for (const std::string& p : roadmap::builtin_planners().names()) {
+    if (p != "grid-dp") out.push_back(p);
+  }
+  return out;
+}
+
+// One shard of a planner property test. Each case runs alone: it must end with a known status
+// within its limits, and a solved run is checked by expect_solved(case, run). Then the runs that
+// depend on their seed alone run again, two at a time, and must give the same record and path.
+// Every planner of any_world_planners() must have run.
+template <class Case, class ExpectSolved>
+void run_shard(const std::string& name, const std::vector<Case>& cases, ExpectSolved expect_solved) {
+  const auto run = [](const Case& c) { return timed_run(c.problem, c.planner, c.params, c.seed, c.time_limit_s, c.node_limit); };
+  std::vector<TimedRun> alone;
+  std::map<std::string, std::pair<int, int>> tally;  // planner: runs, solved
+  for (const Case& c : cases) {
+    const TimedRun& r = alone.emplace_back(run(c));
+    const core::RunRecord& rec = r.out.record;
+    const auto status = rec.status;
+    EXPECT_TRUE(status == core::PlanStatus::kSolved || status == core::PlanStatus::kTimeout ||
+                status == core::PlanStatus::kNodeLimit || status == core::PlanStatus::kUnsolvable)
+        << core::to_string(status) << " " << rec.message << "\n" << c.describe();
+    EXPECT_LE(r.wall_s, c.time_limit_s + time_allowance(c.time_limit_s)) << core::to_string(status) << "\n" << c.describe();
+    EXPECT_LE(rec.nodes, c.node_limit) << core::to_string(status) << "\n" << c.describe();
+    if (status == core::PlanStatus::kSolved) {
+      expect_solved(c, r);
+    } else {
+      EXPECT_TRUE(r.out.path.empty()) << c.describe();
+    }
+    auto& [runs, solved] = tally[c.planner];
+    ++runs;
+    solved += status == core::PlanStatus::kSolved ? 1 : 0;
+  }
+  std::vector<std::size_t> again;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    if (seed_determined(alone[k], cases[k].time_limit_s)) again.push_back(k);
+  }
+  std::vector<TimedRun> paired(cases.size());
+  on_two_threads(again, [&](std::size_t k) { paired[k] = run(cases[k]); });
+  int compared = 0;
+  for (std::size_t k : again) {
+    if (!seed_determined(paired[k], cases[k].time_limit_s)) continue;  // a loaded machine
+    ++compared;
+    expect_same_run(alone[k], paired[k], "1 vs 2 threads, " + cases[k].describe());
+  }
+  EXPECT_GE(compared, cases.size() / (4 * kSanitizerSlowdown));  // instrumented runs near their limits are not compared
+  std::string summary;
+  for (const auto& [planner, n] : tally) summary += " " + planner + " " + std::to_string(n.second) + "/" + std::to_string(n.first);
+  std::cout << name << ": solved/runs" << summary << "; compared on 2 threads: " << compared << "\n";
+  for (const std::string& p : any_world_planners()) EXPECT_GT(tally[p].first, 0) << p << " never ran";
 }
 
 // A fresh directory for one test's problem files, left in place when the test failed, so that the

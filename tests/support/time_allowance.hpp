@@ -5,7 +5,16 @@
 
 namespace amp::test {
 
+// GCC defines __SANITIZE_ADDRESS__ under -fsanitize=address; clang 14 answers __has_feature instead.
 #if defined(__SANITIZE_ADDRESS__)
+#define AMP_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define AMP_TEST_ASAN 1
+#endif
+#endif
+
+#if defined(AMP_TEST_ASAN)
 inline constexpr double kSanitizerSlowdown = 10.0;
 #else
 inline constexpr double kSanitizerSlowdown = 1.0;

@@ -46,6 +46,7 @@ NavigationOutcome DwaNavigator::run(const NavTask& task, const core::StopConditi
   DynamicWindowSettings dwa = dwa_;
   dwa.goal_tolerance = drive_.goal_tolerance;
   DynamicWindow controller(cost, world.grid().origin(), task.goal, drive_.robot(task.robot_radius), dwa);
+  controller.set_stop(&stop);
   out.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Simulator sim = unicycle_simulator(task, drive_);
   const Execution e = execute(sim, controller, drive_.noise(), drive_.max_time, rng, &stop);

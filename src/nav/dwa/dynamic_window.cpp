@@ -83,6 +83,7 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
   admissible.reserve(static_cast<std::size_t>(settings_.v_samples * settings_.omega_samples));
   auto at = [](double lo, double hi, int i, int n) { return n == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * i / (n - 1); };
   for (int i = 0; i < settings_.v_samples; ++i) {
+    if (stop_ != nullptr && stop_->time_up()) break;
     const double v = at(v_lo, v_hi, i, settings_.v_samples);
     for (int k = 0; k < settings_.omega_samples; ++k) {
       const double w = at(w_lo, w_hi, k, settings_.omega_samples);

@@ -4,12 +4,14 @@
 #include <limits>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include "amp/core/error.hpp"
+#include "collada_index_lists.hpp"
 
 namespace amp::world {
 
@@ -18,11 +20,15 @@ namespace {
 // FBX-style scene metadata: "UpAxis" = 0 (x), 1 (y), 2 (z).
 constexpr int kMetadataUpY = 1;
 
-bool collada_declares_y_up(const std::filesystem::path& file) {
-  std::ifstream in(file);
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
-  const std::string s = text.str();
+  return text.str();
+}
+
+bool collada_declares_y_up(const std::filesystem::path& file) {
+  const std::string s = read_text(file);
   const auto pos = s.find("<up_axis>");
   if (pos == std::string::npos) return true;  // COLLADA 1.4: Y_UP is the default
   return s.compare(pos + 9, 4, "Y_UP") == 0 || s.compare(pos + 9, 5, " Y_UP") == 0;
@@ -75,6 +81,15 @@ TriangleMesh load_mesh(const std::filesystem::path& file, UpAxis up) {
   // by assimp (with 5.2 a Z_UP file comes back in its own Z-up frame, a Y_UP file unrotated), and
   // every node transform down from the root. Primitives are not filtered, so that the vertex mean
   // is OMPL.app's.
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".dae") {
+    const std::string doc = read_text(file);
+    if (const std::string_view bad = bad_collada_index_list(doc); !bad.empty()) {
+      throw FileError(file.string() + ": cannot read mesh: a COLLADA index list holds '" + std::string(bad) +
+                      "', not only indices");
+    }
+  }
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr) {

@@ -85,15 +85,8 @@ std::string check_trace(const test::PlanarModel& m, const std::vector<Vec2>& tra
   return "";
 }
 
-struct NavCase {
-  int index = 0;
-  test::PlanarModel model;
-  fs::path file;
-  world::Problem problem;
+struct NavCase : test::DrawnCase<test::PlanarModel> {
   std::string method;
-  core::ParamMap params;
-  std::uint64_t seed = 0;
-  double time_limit_s = 0.0;
 
   std::string describe() const {
     std::string s = "case " + std::to_string(index) + ": " + method + " on " + file.string() + " --seed " + std::to_string(seed);

@@ -14,8 +14,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,7 +26,6 @@
 #include "support/exact_geometry.hpp"
 #include "support/planner_runs.hpp"
 #include "support/random_problems.hpp"
-#include "support/time_allowance.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -118,32 +115,13 @@ std::string certify(const test::PlanarModel& m, const std::vector<State>& path) 
   return "";
 }
 
-struct Case {
-  int index = 0;
-  test::PlanarModel model;
-  fs::path file;
-  world::Problem problem;
-  std::string planner;
-  core::ParamMap params;
-  std::uint64_t seed = 0;
-  double time_limit_s = 0.0;
-  std::size_t node_limit = 0;
-
-  std::string describe() const {
-    return "case " + std::to_string(index) + ": amp plan " + file.string() + " " +
-           test::plan_arguments(planner, params, seed, time_limit_s, node_limit) + "\n" + model.yaml;
-  }
-};
+using Case = test::PlannerCase<test::PlanarModel>;
 
 bool is_map_case(int index) { return index % kMapEvery == kMapEvery - 1; }
 
 // Planners take turns; a map case with a point or disc robot goes to grid-dp every third time.
 std::string pick_planner(int index, const test::PlanarModel& m) {
-  static const std::vector<std::string> all = builtin_planners().names();
-  std::vector<std::string> others;
-  for (const std::string& n : all) {
-    if (n != "grid-dp") others.push_back(n);
-  }
+  static const std::vector<std::string> others = test::any_world_planners();
   const bool grid_robot = m.robot.kind == RobotKind::kPoint || m.robot.kind == RobotKind::kDisc;
   if (is_map_case(index)) {
     const int k = index / kMapEvery;
@@ -166,30 +144,15 @@ Case make_case(int index, const fs::path& root) {
   if (o.map) std::ofstream(dir / "map.map") << c.model.map_text;
   c.problem = world::load_problem(c.file);
   c.planner = pick_planner(index, c.model);
-  c.params = test::random_params(builtin_planners().info(c.planner), rng);
-  c.seed = rng.next_u64() >> 16;
-  c.time_limit_s = test::random_time_limit(rng);
-  c.node_limit = test::random_node_limit(c.planner, c.params, 300, rng);
+  c.draw_run(rng, 300);
   return c;
 }
 
-// The properties of one run, alone.
-void expect_run_properties(const Case& c, const test::TimedRun& r) {
-  const core::RunRecord& rec = r.out.record;
-  const auto status = rec.status;
-  EXPECT_TRUE(status == core::PlanStatus::kSolved || status == core::PlanStatus::kTimeout ||
-              status == core::PlanStatus::kNodeLimit || status == core::PlanStatus::kUnsolvable)
-      << core::to_string(status) << " " << rec.message << "\n" << c.describe();
-  EXPECT_LE(r.wall_s, c.time_limit_s + test::time_allowance(c.time_limit_s))
-      << core::to_string(status) << "\n" << c.describe();
-  EXPECT_LE(rec.nodes, c.node_limit) << core::to_string(status) << "\n" << c.describe();
-  if (status != core::PlanStatus::kSolved) {
-    EXPECT_TRUE(r.out.path.empty()) << c.describe();
-    return;
-  }
+// A solved run's path, besides the limits that run_shard checks.
+void expect_solved_path(const Case& c, const test::TimedRun& r) {
   const std::vector<State>& path = r.out.path;
   ASSERT_GE(path.size(), 2u) << c.describe();
-  EXPECT_EQ(rec.path_states, path.size()) << c.describe();
+  EXPECT_EQ(r.out.record.path_states, path.size()) << c.describe();
   const double tol = 1e-9 * (c.model.bounds.hi - c.model.bounds.lo).maxCoeff();
   EXPECT_LE(state_gap(c.model.robot, path.front(), c.model.start), tol) << "path does not start at the start\n" << c.describe();
   EXPECT_LE(state_gap(c.model.robot, path.back(), c.model.goal), tol) << "path does not end at the goal\n" << c.describe();
@@ -203,42 +166,8 @@ TEST_P(PlanarProperties, RunsKeepTheirLimitsAndSolvedPathsAreCertifiedAndThreadI
   const int shard = GetParam(), per_shard = kCases / kShards;
   test::TempDir dir("planar-" + std::to_string(shard));
   std::vector<Case> cases;
-  std::vector<test::TimedRun> alone;
-  std::map<std::string, std::pair<int, int>> tally;  // planner: runs, solved
-  for (int i = shard * per_shard; i < (shard + 1) * per_shard; ++i) {
-    cases.push_back(make_case(i, dir.path()));
-    const Case& c = cases.back();
-    alone.push_back(test::timed_run(c.problem, c.planner, c.params, c.seed, c.time_limit_s, c.node_limit));
-    expect_run_properties(c, alone.back());
-    auto& [runs, solved] = tally[c.planner];
-    ++runs;
-    solved += alone.back().out.record.status == core::PlanStatus::kSolved ? 1 : 0;
-  }
-  // The runs that depend on their seed alone, again, two at a time.
-  std::vector<std::size_t> again;
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    if (test::seed_determined(alone[k], cases[k].time_limit_s)) again.push_back(k);
-  }
-  std::vector<test::TimedRun> paired(cases.size());
-  test::on_two_threads(again, [&](std::size_t k) {
-    const Case& c = cases[k];
-    paired[k] = test::timed_run(c.problem, c.planner, c.params, c.seed, c.time_limit_s, c.node_limit);
-  });
-  int compared = 0;
-  for (std::size_t k : again) {
-    if (!test::seed_determined(paired[k], cases[k].time_limit_s)) continue;  // a loaded machine
-    ++compared;
-    test::expect_same_run(alone[k], paired[k], "1 vs 2 threads, " + cases[k].describe());
-  }
-  EXPECT_GE(compared, per_shard / (4 * test::kSanitizerSlowdown));  // instrumented runs near their limits are not compared
-  std::string summary;
-  for (const auto& [planner, n] : tally) summary += " " + planner + " " + std::to_string(n.second) + "/" + std::to_string(n.first);
-  std::cout << "shard " << shard << ": solved/runs" << summary << "; compared on 2 threads: " << compared << "\n";
-  for (const std::string& p : builtin_planners().names()) {
-    if (p != "grid-dp") {
-      EXPECT_GT(tally[p].first, 0) << p << " never ran";
-    }
-  }
+  for (int i = shard * per_shard; i < (shard + 1) * per_shard; ++i) cases.push_back(make_case(i, dir.path()));
+  test::run_shard("shard " + std::to_string(shard), cases, expect_solved_path);
 }
 
 // The certificate is no rubber stamp: on the straight line from start to goal of the first 200

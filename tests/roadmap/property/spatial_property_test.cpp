@@ -9,8 +9,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,12 +16,10 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/world/problem.hpp"
 #include "support/exact_geometry.hpp"
 #include "support/planner_runs.hpp"
 #include "support/random_problems.hpp"
-#include "support/time_allowance.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -200,24 +196,10 @@ std::string certify(const Model& m, const std::vector<State>& path) {
   return "";
 }
 
-struct Case {
-  int index = 0;
-  Model model;
-  fs::path file;
-  world::Problem problem;
-  std::string planner;
-  core::ParamMap params;
-  std::uint64_t seed = 0;
-  double time_limit_s = 0.0;
-  std::size_t node_limit = 0;
+using Case = test::PlannerCase<Model>;
 
-  std::string describe() const {
-    return "case " + std::to_string(index) + ": amp plan " + file.string() + " " +
-           test::plan_arguments(planner, params, seed, time_limit_s, node_limit) + "\n" + model.yaml;
-  }
-};
-
-Case make_case(int index, const fs::path& root, const std::vector<std::string>& planners) {
+Case make_case(int index, const fs::path& root) {
+  static const std::vector<std::string> planners = test::any_world_planners();
   Case c;
   c.index = index;
   core::Rng rng(core::derive_seed(kMasterSeed, static_cast<std::uint64_t>(index)));
@@ -229,25 +211,11 @@ Case make_case(int index, const fs::path& root, const std::vector<std::string>& 
   std::ofstream(c.file) << "name: case-" << index << "\n" << c.model.yaml;
   c.problem = world::load_problem(c.file);
   c.planner = planners[static_cast<std::size_t>(index) % planners.size()];
-  c.params = test::random_params(builtin_planners().info(c.planner), rng);
-  c.seed = rng.next_u64() >> 16;
-  c.time_limit_s = test::random_time_limit(rng);
-  c.node_limit = test::random_node_limit(c.planner, c.params, 200, rng);
+  c.draw_run(rng, 200);
   return c;
 }
 
-void expect_run_properties(const Case& c, const test::TimedRun& r) {
-  const core::RunRecord& rec = r.out.record;
-  const auto status = rec.status;
-  EXPECT_TRUE(status == core::PlanStatus::kSolved || status == core::PlanStatus::kTimeout ||
-              status == core::PlanStatus::kNodeLimit || status == core::PlanStatus::kUnsolvable)
-      << core::to_string(status) << " " << rec.message << "\n" << c.describe();
-  EXPECT_LE(r.wall_s, c.time_limit_s + test::time_allowance(c.time_limit_s)) << core::to_string(status) << "\n" << c.describe();
-  EXPECT_LE(rec.nodes, c.node_limit) << core::to_string(status) << "\n" << c.describe();
-  if (status != core::PlanStatus::kSolved) {
-    EXPECT_TRUE(r.out.path.empty()) << c.describe();
-    return;
-  }
+void expect_solved_path(const Case& c, const test::TimedRun& r) {
   const std::vector<State>& path = r.out.path;
   ASSERT_GE(path.size(), 2u) << c.describe();
   const double tol = 1e-9 * (c.model.hi - c.model.lo).maxCoeff();
@@ -261,43 +229,10 @@ class SpatialProperties : public ::testing::TestWithParam<int> {};
 
 TEST_P(SpatialProperties, RunsKeepTheirLimitsAndSolvedPathsAreCertifiedAndThreadIndependent) {
   const int shard = GetParam(), per_shard = kCases / kShards;
-  std::vector<std::string> planners;
-  for (const std::string& p : builtin_planners().names()) {
-    if (p != "grid-dp") planners.push_back(p);  // map worlds only
-  }
   test::TempDir dir("spatial-" + std::to_string(shard));
   std::vector<Case> cases;
-  std::vector<test::TimedRun> alone;
-  std::map<std::string, std::pair<int, int>> tally;  // planner: runs, solved
-  for (int i = shard * per_shard; i < (shard + 1) * per_shard; ++i) {
-    cases.push_back(make_case(i, dir.path(), planners));
-    const Case& c = cases.back();
-    alone.push_back(test::timed_run(c.problem, c.planner, c.params, c.seed, c.time_limit_s, c.node_limit));
-    expect_run_properties(c, alone.back());
-    auto& [runs, solved] = tally[c.planner];
-    ++runs;
-    solved += alone.back().out.record.status == core::PlanStatus::kSolved ? 1 : 0;
-  }
-  std::vector<std::size_t> again;
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    if (test::seed_determined(alone[k], cases[k].time_limit_s)) again.push_back(k);
-  }
-  std::vector<test::TimedRun> paired(cases.size());
-  test::on_two_threads(again, [&](std::size_t k) {
-    const Case& c = cases[k];
-    paired[k] = test::timed_run(c.problem, c.planner, c.params, c.seed, c.time_limit_s, c.node_limit);
-  });
-  int compared = 0;
-  for (std::size_t k : again) {
-    if (!test::seed_determined(paired[k], cases[k].time_limit_s)) continue;
-    ++compared;
-    test::expect_same_run(alone[k], paired[k], "1 vs 2 threads, " + cases[k].describe());
-  }
-  EXPECT_GE(compared, per_shard / (4 * test::kSanitizerSlowdown));  // instrumented runs near their limits are not compared
-  std::string summary;
-  for (const auto& [planner, n] : tally) summary += " " + planner + " " + std::to_string(n.second) + "/" + std::to_string(n.first);
-  std::cout << "shard " << shard << ": solved/runs" << summary << "; compared on 2 threads: " << compared << "\n";
-  for (const std::string& p : planners) EXPECT_GT(tally[p].first, 0) << p << " never ran";
+  for (int i = shard * per_shard; i < (shard + 1) * per_shard; ++i) cases.push_back(make_case(i, dir.path()));
+  test::run_shard("shard " + std::to_string(shard), cases, expect_solved_path);
 }
 
 // The certificate is no rubber stamp (as the planar one): a straight line from start to goal that a

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "amp/core/error.hpp"
@@ -70,6 +73,27 @@ TEST(MeshLoader, UnreadableFileNamesTheFile) {
     EXPECT_NE(std::string(e.what()).find("not_a_mesh.stl"), std::string::npos) << e.what();
   }
   EXPECT_THROW(load_mesh(kMeshes + "missing.obj"), FileError);
+}
+
+// Fuzzing found: one character that is not a digit in a COLLADA <p> list sent assimp 5.2 into growing
+// its index buffer until std::bad_alloc (minutes). load_mesh refuses such a file at once.
+TEST(MeshLoader, ColladaIndexListWithAForeignCharacterIsRefused) {
+  std::ifstream in(kMeshes + "box_yup.dae");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string doc = text.str();
+  const std::size_t p = doc.find("<p>");
+  ASSERT_NE(p, std::string::npos);
+  doc.insert(p + 3, "7 \xff");
+  const std::filesystem::path file = std::filesystem::path(::testing::TempDir()) / "foreign_index.dae";
+  std::ofstream(file, std::ios::binary) << doc;
+  try {
+    load_mesh(file);
+    FAIL() << "expected FileError";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("foreign_index.dae: cannot read mesh: a COLLADA index list holds '\\xff"),
+              std::string::npos) << e.what();
+  }
 }
 
 TEST(MeshLoader, ParsesUpAxis) {

@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "amp/core/stop_condition.hpp"
+
 #include "amp/nav/motion_controller.hpp"
 #include "amp/nav/unicycle_disc.hpp"
 #include "amp/world/grid_cost_to_go.hpp"
@@ -49,6 +51,10 @@ class DynamicWindow final : public MotionController {
 
   Eigen::Vector2d command(const Simulator& sim) override;
   bool arrived(const RobotState& s) const override;
+  // Polled between rows of the window: one command scores v_samples x omega_samples arcs (seconds,
+  // with a large window and footprint), so a run's time limit is kept inside a step. Once it fired,
+  // command() chooses among the arcs scored so far.
+  void set_stop(const core::StopCondition* stop) { stop_ = stop; }
 
  private:
   // The value function's descent direction at p: minus its gradient (central differences of the
@@ -59,6 +65,7 @@ class DynamicWindow final : public MotionController {
   Eigen::Vector2d origin_, goal_;
   UnicycleDiscSettings robot_;
   DynamicWindowSettings settings_;
+  const core::StopCondition* stop_ = nullptr;
 };
 
 }  // namespace amp::nav
