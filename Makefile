@@ -49,7 +49,7 @@ sanitize: sanitize-build
 # the executions instead (scripts/fuzz.sh).
 FUZZ_SECONDS ?= 60
 fuzz: sanitize-build
-	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh $(SAN_BUILD)
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_SEED=$(FUZZ_SEED) FUZZ_TARGETS="$(FUZZ_TARGETS)" bash scripts/fuzz.sh $(SAN_BUILD)
 
 clean:
 	rm -rf $(BUILD) $(SAN_BUILD)

@@ -5,6 +5,7 @@
 #   FUZZ_RUNS    [-1]   stop a target after this many executions instead (-1: no bound)
 #   FUZZ_JOBS    [nproc] targets run at once
 #   FUZZ_TARGETS [all]  space-separated names (problem_yaml png ...)
+#   FUZZ_SEED    [0]    libFuzzer's -seed (0: drawn per run; CI fixes it so that a run repeats)
 # A target fails on a crash, an uncaught non-amp exception, a leak (but assimp's own: tests/fuzz/
 # lsan.supp), undefined behaviour, an input
 # that runs over 1 s, or over 2 GB. The seed corpus tests/fuzz/corpus/<name> is only read: new
@@ -27,7 +28,7 @@ run_one() {
   if ASAN_OPTIONS=detect_leaks=1${symbolizer:+:external_symbolizer_path=$symbolizer} \
      LSAN_OPTIONS=suppressions=$src/tests/fuzz/lsan.supp UBSAN_OPTIONS=print_stacktrace=1 \
      "$build/fuzz/fuzz_$name" "$dir/corpus" "$src/tests/fuzz/corpus/$name" "${dict[@]}" \
-       -max_total_time="$seconds" -runs="$runs" -timeout=1 -rss_limit_mb=2048 \
+       -max_total_time="$seconds" -runs="$runs" -seed="${FUZZ_SEED:-0}" -timeout=1 -rss_limit_mb=2048 \
        -artifact_prefix="$dir/" -print_final_stats=1 >"$dir/log" 2>&1; then
     echo ok >"$dir/result"
   else
