@@ -11,7 +11,7 @@
 #include <assimp/scene.h>
 
 #include "amp/core/error.hpp"
-#include "collada_index_lists.hpp"
+#include "collada_screen.hpp"
 
 namespace amp::world {
 
@@ -27,21 +27,19 @@ std::string read_text(const std::filesystem::path& file) {
   return text.str();
 }
 
-bool collada_declares_y_up(const std::filesystem::path& file) {
-  const std::string s = read_text(file);
+bool collada_declares_y_up(const std::string& s) {
   const auto pos = s.find("<up_axis>");
   if (pos == std::string::npos) return true;  // COLLADA 1.4: Y_UP is the default
   return s.compare(pos + 9, 4, "Y_UP") == 0 || s.compare(pos + 9, 5, " Y_UP") == 0;
 }
 
-bool file_is_y_up(const aiScene& scene, const std::filesystem::path& file) {
+// `collada` is the document text of a .dae file, and empty for every other format.
+bool file_is_y_up(const aiScene& scene, const std::string& collada) {
   if (scene.mMetaData != nullptr) {
     int axis = 0;
     if (scene.mMetaData->Get("UpAxis", axis)) return axis == kMetadataUpY;
   }
-  std::string ext = file.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".dae" && collada_declares_y_up(file);
+  return !collada.empty() && collada_declares_y_up(collada);
 }
 
 // Every vertex of every mesh the node tree instances (points and lines included, as OMPL.app's
@@ -83,12 +81,9 @@ TriangleMesh load_mesh(const std::filesystem::path& file, UpAxis up) {
   // is OMPL.app's.
   std::string ext = file.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".dae") {
-    const std::string doc = read_text(file);
-    if (const std::string_view bad = bad_collada_index_list(doc); !bad.empty()) {
-      throw FileError(file.string() + ": cannot read mesh: a COLLADA index list holds '" + std::string(bad) +
-                      "', not only indices");
-    }
+  const std::string collada = ext == ".dae" ? read_text(file) : std::string();
+  if (const std::string refusal = collada_refusal(collada); !refusal.empty()) {
+    throw FileError(file.string() + ": cannot read mesh: " + refusal);
   }
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
@@ -103,7 +98,7 @@ TriangleMesh load_mesh(const std::filesystem::path& file, UpAxis up) {
   }
   if (mesh.triangles.empty()) throw FileError(file.string() + ": mesh has no triangles");
 
-  const bool y_up = up == UpAxis::kY || (up == UpAxis::kAuto && file_is_y_up(*scene, file));
+  const bool y_up = up == UpAxis::kY || (up == UpAxis::kAuto && file_is_y_up(*scene, collada));
   if (y_up) {
     for (Eigen::Vector3d& v : mesh.vertices) v = Eigen::Vector3d(v.x(), -v.z(), v.y());  // +90 deg about x
   }

@@ -31,7 +31,10 @@ Eigen::Isometry3d pose_of(const YamlFields& f, std::string_view position_key) {
 
 Solid parse_solid(const YamlFields& item) {
   if (!item.is_map() || item.node().size() != 1) item.fail("", "expected one of box, sphere, cylinder, mesh");
-  const std::string kind = item.node().begin()->first.as<std::string>();
+  // A complex key ("? [a, b]" or "{...}:") is legal YAML; as<std::string>() would throw yaml-cpp's own error.
+  const YAML::Node key = item.node().begin()->first;
+  if (!key.IsScalar()) item.fail("", "expected one of box, sphere, cylinder, mesh as the key, got a non-scalar key");
+  const std::string kind = key.Scalar();
   try {
     if (kind == "box") {
       const YamlFields f = item.child("box");

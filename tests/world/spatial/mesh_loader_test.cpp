@@ -96,6 +96,38 @@ TEST(MeshLoader, ColladaIndexListWithAForeignCharacterIsRefused) {
   }
 }
 
+// Fuzzing found (corpus/mesh_dae/finding-accessor-past-its-array.dae): a <float_array> without its
+// count attribute is stored empty by assimp 5.2, which then reads the positions of its <accessor>
+// through a null pointer. Any accessor reaching past its array is refused before assimp sees it.
+TEST(MeshLoader, ColladaAccessorPastItsArrayIsRefused) {
+  std::ifstream in(kMeshes + "box_yup.dae");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const std::string array_count = "count=\"24\"";
+  ASSERT_NE(doc.find(array_count), std::string::npos);
+  const auto refused = [&](const std::string& from, const std::string& to, const std::string& needle) {
+    std::string bad = doc;
+    bad.replace(bad.find(from), from.size(), to);
+    const std::filesystem::path file = std::filesystem::path(::testing::TempDir()) / "accessor.dae";
+    std::ofstream(file, std::ios::binary) << bad;
+    try {
+      load_mesh(file);
+      ADD_FAILURE() << "expected FileError for " << to;
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find("accessor.dae: cannot read mesh: "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  refused(array_count, "count2=\"24\"", "a COLLADA <accessor> of 8 x 3 from offset 0 reads past '#box-positions-array' of 0");
+  refused(array_count, "count=\"23\"", "reads past '#box-positions-array' of 23");
+  refused(array_count, "count=\"2&#52;\"", "the count of COLLADA <float_array> is not a plain number");
+  refused("source=\"#box-positions-array\"", "source=\"#elsewhere\"", "source '#elsewhere' names no data array");
+  refused("stride=\"3\"", "stride=\"3\" offset=\"1\"", "a COLLADA <accessor> of 8 x 3 from offset 1 reads past");
+  refused("stride=\"3\"", "stride=\"2\"", "a COLLADA <accessor> has 3 params in a stride of 2");
+  EXPECT_EQ(load_mesh(kMeshes + "box_yup.dae").vertices.size(), 8U);
+}
+
 TEST(MeshLoader, ParsesUpAxis) {
   EXPECT_EQ(parse_up_axis("y"), UpAxis::kY);
   EXPECT_EQ(parse_up_axis("z"), UpAxis::kZ);

@@ -103,5 +103,19 @@ TEST(SpatialYaml, ErrorsNameTheField) {
                "slide");
 }
 
+// Fuzzing (corpus/problem_yaml/solid-key-not-a-scalar.yaml): an obstacle whose one key is itself a mapping
+// let yaml-cpp's TypedBadConversion escape instead of a FileError.
+TEST(SpatialYaml, SolidKeyNotAScalarIsAFileError) {
+  const std::string head = "bounds: {min: [0, 0, 0], max: [1, 1, 1]}\nrobot: {type: sphere, radius: 0.1}\n";
+  for (const std::string obstacle : {"{box: {center: [0, 0, 0], size: [1, 1, 1]}}: ", "? [box, sphere]\n      : 1"}) {
+    try {
+      parse(head + "world:\n  obstacles:\n    - " + obstacle + "\n");
+      ADD_FAILURE() << "expected FileError for " << obstacle;
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find("non-scalar key"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace amp::world
