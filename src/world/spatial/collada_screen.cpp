@@ -21,13 +21,13 @@ struct StartTag {
 };
 
 // The start tag at doc[pos] == '<', or nothing for an end tag, a comment, a declaration or a tag
-// that never closes.
+// that never closes. A name ends at '<' too, so that a run of '<' costs linear time, not quadratic.
 std::optional<StartTag> start_tag_at(std::string_view doc, std::size_t pos) {
   std::size_t i = pos + 1;
   if (i >= doc.size() || doc[i] == '/' || doc[i] == '!' || doc[i] == '?') return std::nullopt;
-  while (i < doc.size() && !is_space(doc[i]) && doc[i] != '>' && doc[i] != '/') ++i;
-  const std::size_t close = doc.find('>', i);
-  if (close == std::string_view::npos) return std::nullopt;
+  while (i < doc.size() && !is_space(doc[i]) && doc[i] != '>' && doc[i] != '/' && doc[i] != '<') ++i;
+  const std::size_t close = doc.find_first_of("<>", i);
+  if (close == std::string_view::npos || doc[close] != '>') return std::nullopt;
   StartTag tag;
   tag.name = doc.substr(pos + 1, i - pos - 1);
   tag.empty = doc[close - 1] == '/';
@@ -90,6 +90,21 @@ bool is_data_array(std::string_view name) {
   return std::find(kArrays.begin(), kArrays.end(), name) != kArrays.end();
 }
 
+// The <param> children of an accessor whose content starts at `from`: counted up to the first tag
+// that is neither a param nor a comment, so that each '<' of the document is looked at once.
+unsigned long long params_from(std::string_view doc, std::size_t from) {
+  unsigned long long params = 0;
+  for (std::size_t p = doc.find('<', from); p != std::string_view::npos; p = doc.find('<', p + 1)) {
+    const std::string_view rest = doc.substr(p);
+    if (rest.starts_with("<param") && rest.size() > 6 && (is_space(rest[6]) || rest[6] == '/' || rest[6] == '>')) {
+      ++params;
+    } else if (!rest.starts_with("</param") && !rest.starts_with("<!")) {
+      break;
+    }
+  }
+  return params;
+}
+
 struct Accessor {
   std::string_view source;
   unsigned long long count = 0, stride = 1, offset = 0, params = 0;
@@ -127,8 +142,7 @@ std::string collada_refusal(std::string_view doc) {
         return "a COLLADA <accessor> lacks a plain source, count, stride or offset";
       }
       a.source = *source, a.count = *count, a.stride = *stride, a.offset = *offset;
-      const std::size_t end = tag->empty ? tag->content : doc.find("</accessor", tag->content);
-      for (std::size_t p = doc.find("<param", tag->content); p < end; p = doc.find("<param", p + 1)) ++a.params;
+      if (!tag->empty) a.params = params_from(doc, tag->content);
       accessors.push_back(a);
     }
   }
