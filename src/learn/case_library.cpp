@@ -43,7 +43,9 @@ const core::SettingsSchema<CaseSettings>& CaseSettings::schema() {
        core::real_field<S>("new_case_threshold", &S::new_case_threshold, 0, 1,
                            "a relative similarity below this creates a case, in [0, 1)"),
        core::bool_field<S>("reward_weighted", &S::reward_weighted,
-                           "reinforced outputs move in proportion to each sample's reward (false: the paper's rule)")});
+                           "reinforced outputs move in proportion to each sample's reward (false: the paper's rule)"),
+       core::real_field<S>("outcome_rate", &S::outcome_rate, 0, 1,
+                           "> 0: outputs learn from each world's outcome at this rate, not from the interval (0: off)")});
   return schema;
 }
 
@@ -239,7 +241,7 @@ Learned CaseLibrary::learn(const CaseMatch& m, const CaseHistory& env) {
       const CaseInputs& ei = env.input(newest - i);
       const CaseOutputs& eo = env.output(newest - i);
       // Reward weighting (an AMP addition, docs/sins.md): outputs move only as far as they paid.
-      const double wo = settings_.reward_weighted ? w * env.reward(newest - i) : w;
+      const double wo = settings_.outcome_rate > 0.0 ? 0.0 : settings_.reward_weighted ? w * env.reward(newest - i) : w;
       for (int x = 0; x < kCaseInputs; ++x) c.inputs[k][x] += w * (ei[x] - c.inputs[k][x]);
       for (int x = 0; x < kCaseOutputs; ++x) c.outputs[k][x] += wo * (eo[x] - c.outputs[k][x]);
     }
@@ -265,6 +267,14 @@ Learned CaseLibrary::learn(const CaseMatch& m, const CaseHistory& env) {
   ++used.uses;
   used.mean_error += (m.error - used.mean_error) / used.uses;  // running mean of E over the uses
   return result;
+}
+
+void CaseLibrary::shift_outputs(int j, int q, const CaseOutputs& toward, double weight) {
+  if (j < 0 || j >= size() || q < 0 || q >= settings_.case_length) {
+    throw ParameterError("case_library: no output sample " + std::to_string(q) + " of case " + std::to_string(j));
+  }
+  CaseOutputs& o = cases_[static_cast<std::size_t>(j)].outputs[static_cast<std::size_t>(q)];
+  for (int x = 0; x < kCaseOutputs; ++x) o[x] = std::clamp(o[x] + weight * (toward[x] - o[x]), 0.0, 1.0);
 }
 
 }  // namespace amp::learn

@@ -202,6 +202,26 @@ TEST(CaseLibraryLearn, RewardWeightingScalesOnlyTheOutputs) {
   EXPECT_EQ(h.size(), 0);
 }
 
+// Outcome credit (an AMP addition): with outcome_rate > 0 the interval's reinforcement moves the
+// inputs only, and shift_outputs moves one output sample toward (or away from) a point, clamped.
+TEST(CaseLibraryLearn, WithOutcomeCreditReinforcementLeavesTheOutputs) {
+  CaseSettings s = hand_library().settings();
+  s.outcome_rate = 0.5;
+  CaseLibrary lib(s, hand_library().cases());
+  const CaseHistory h = hand_history();
+  ASSERT_EQ(lib.learn(lib.match(1, 3, h), h), Learned::kReinforced);
+  expect_array_near(lib.at(1).inputs[2], {0.5, 0.125, 0, 0}, "k2 inputs move as before");
+  for (int k = 0; k < 3; ++k) expect_array_near(lib.at(1).outputs[k], kCase1Outputs[k], "outputs untouched");
+  // Case 1, sample 1: (.25, .75, 0, 1) toward (1, .25, .5, 1) by 0.4: (.55, .55, .2, 1).
+  lib.shift_outputs(1, 1, {1, 0.25, 0.5, 1}, 0.4);
+  expect_array_near(lib.at(1).outputs[1], {0.55, 0.55, 0.2, 1}, "toward");
+  // Away from (1, 1, 0, 0) by 0.5: (.55 - .225, .55 - .225, .2 + .1, 1 + .5 -> 1).
+  lib.shift_outputs(1, 1, {1, 1, 0, 0}, -0.5);
+  expect_array_near(lib.at(1).outputs[1], {0.325, 0.325, 0.3, 1}, "away, clamped");
+  EXPECT_THROW(lib.shift_outputs(2, 0, {0, 0, 0, 0}, 0.1), ParameterError);
+  EXPECT_THROW(lib.shift_outputs(0, 3, {0, 0, 0, 0}, 0.1), ParameterError);
+}
+
 TEST(CaseLibraryAdapt, ALeastSpreadWidensAnExactMatch) {
   const CaseLibrary lib = hand_library();
   core::Rng rng(21), twin(21);

@@ -28,6 +28,10 @@ struct CaseSettings {
   // attract the case and the others do not. An AMP addition: the paper's rule (false) has no such
   // term, and measured, it drifts from good parameters as readily as toward them (docs/sins.md).
   bool reward_weighted = true;
+  // > 0: outputs learn from whole worlds instead (the caller's outcome credit, shift_outputs, at
+  // this rate), and the interval's reinforcement moves the inputs only. An AMP addition
+  // (docs/sins.md): an interval's progress is a myopic reward. 0: the interval rule above.
+  double outcome_rate = 0.0;
   static const core::SettingsSchema<CaseSettings>& schema();
   void validate() const;  // throws ParameterError naming the setting
 };
@@ -126,6 +130,10 @@ class CaseLibrary {
   // (below new_case_threshold with a full history), or keep; then the use is recorded on the case
   // matched. `m` must come from retrieve() or match() on this `env`.
   Learned learn(const CaseMatch& m, const CaseHistory& env);
+  // Moves case j's output sample q toward `toward` by `weight` (negative: away), each value
+  // clamped to [0, 1]: the outcome credit of CaseSettings::outcome_rate. Throws ParameterError for
+  // a j or q out of range.
+  void shift_outputs(int j, int q, const CaseOutputs& toward, double weight);
 
   int size() const { return static_cast<int>(cases_.size()); }
   const Case& at(int j) const { return cases_.at(static_cast<std::size_t>(j)); }

@@ -164,6 +164,9 @@ WorldOutcome run_world(const ClutterWorld& world, int index, ParameterPolicy& po
     if (!arrived && out.steps % settings.control_interval == 0) params = policy.end_interval(trends.close_interval(), rng);
   }
   out.solved = arrived;
+  if (arrived || out.steps >= settings.step_limit) {
+    policy.end_world(arrived, static_cast<double>(out.steps) / settings.step_limit);
+  }
   out.min_clearance = std::max(0.0, out.min_clearance);
   out.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return out;

@@ -1,6 +1,8 @@
 #include "amp/nav/sins/parameter_policy.hpp"
 
 #include <algorithm>
+#include <array>
+#include <vector>
 #include <cmath>
 #include <string>
 
@@ -120,6 +122,61 @@ TEST(CaseBasedParameters, ThePapersRuleWithoutTheAdditions) {
   sins.begin_world(rng);
   const SchemaParameters p = sins.end_interval({0.5, 0.5, 0.5, 0.5}, rng);  // E = 0, no progress
   expect_same(p, SchemaParameters::from_normalised({0.5, 0.5, 0.5, 0.5}));
+}
+
+TEST(CaseBasedParameters, TheFirstCaseRecommendsTheInitialParameters) {
+  // "SINS would also start out with those same settings": the generic case's outputs are the
+  // initial parameters, so an exact match (no exploration) installs them again.
+  const SchemaParameters initial{0.5, 0.5, 1.0, 10.0};
+  CaseBasedParameters sins(learn::CaseSettings{}, initial, 0.0);
+  for (const auto& out : sins.library().at(0).outputs) {
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(out[x], initial.normalised()[x]);
+  }
+  core::Rng rng(1);
+  sins.begin_world(rng);
+  const SchemaParameters p = sins.end_interval({0.5, 0.5, 0.5, 0.5}, rng);  // E = 0
+  EXPECT_NEAR(p.obstacle_gain, initial.obstacle_gain, 1e-12);
+  EXPECT_NEAR(p.goal_gain, initial.goal_gain, 1e-12);
+  EXPECT_NEAR(p.noise_gain, initial.noise_gain, 1e-12);
+  EXPECT_NEAR(p.noise_persistence, initial.noise_persistence, 1e-9);
+}
+
+TEST(CaseBasedParameters, OutcomeCreditByHand) {
+  // Two worlds. The first (unsolved, R = 0) only sets the baseline b = 0. In the second, two
+  // intervals install outputs from the generic case; it is solved at 20% of the step limit, so
+  // R = 0.8, the advantage 0.8 - 0 and every sample used moves toward the mean of what was
+  // installed from it by outcome_rate x 0.8 = 0.4; then b = 0 + 0.1 x 0.8.
+  learn::CaseSettings cs;
+  cs.outcome_rate = 0.5;
+  CaseBasedParameters sins(cs, SchemaParameters::middle(), 0.3);
+  core::Rng rng(5);
+  sins.begin_world(rng);
+  sins.end_interval({0.2, 0.6, 0.4, 0.5}, rng);
+  sins.end_world(false, 1.0);
+  EXPECT_EQ(sins.baseline(), 0.0);
+  for (const auto& out : sins.library().at(0).outputs) {
+    for (double v : out) EXPECT_EQ(v, 0.5);  // advantage 0: nothing moved
+  }
+  sins.begin_world(rng);
+  std::array<learn::CaseOutputs, 4> sum{};
+  std::array<int, 4> count{};
+  for (int i = 0; i < 2; ++i) {
+    const learn::CaseOutputs installed = sins.end_interval({0.3, 0.5, 0.5, 0.6}, rng).normalised();
+    ASSERT_EQ(sins.last_cycle()->match.case_index, 0);
+    const int q = std::min(sins.last_cycle()->match.position, 3);
+    for (int x = 0; x < 4; ++x) sum[static_cast<std::size_t>(q)][x] += installed[x];
+    ++count[static_cast<std::size_t>(q)];
+  }
+  ASSERT_EQ(sins.cases(), 1);
+  const std::vector<learn::CaseOutputs> before = sins.library().at(0).outputs;
+  sins.end_world(true, 0.2);
+  EXPECT_NEAR(sins.baseline(), 0.08, 1e-15);
+  for (std::size_t q = 0; q < 4; ++q) {
+    for (int x = 0; x < 4; ++x) {
+      const double want = count[q] == 0 ? before[q][x] : before[q][x] + 0.4 * (sum[q][x] / count[q] - before[q][x]);
+      EXPECT_NEAR(sins.library().at(0).outputs[q][x], want, 1e-12) << "sample " << q << " output " << x;
+    }
+  }
 }
 
 TEST(ParameterPolicyFactory, NamesTheSystems) {

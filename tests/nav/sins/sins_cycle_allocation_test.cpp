@@ -17,34 +17,42 @@ namespace amp::nav {
 namespace {
 
 TEST(SinsCycleAllocation, StepsAndIntervalsAllocateOnlyForCreatedCases) {
-  learn::CaseSettings cs;
-  cs.case_length = 20;
-  cs.max_cases = 10;
-  CaseBasedParameters sins(cs);
-  MotorSchemas schemas;
-  EnvironmentTrends trends(2.0, 1.0);
-  core::Rng rng(4);
-  std::vector<double> readings(16);
-  std::vector<Eigen::Vector2d> directions(16);
-  for (int i = 0; i < 16; ++i) directions[i] = Eigen::Vector2d(std::cos(i * 0.3927), std::sin(i * 0.3927));
-  Eigen::Vector2d position(1, 1);
-  const Eigen::Vector2d goal(30, 30);
-  SchemaParameters p = sins.begin_world(rng);
-  trends.reset(position, goal);
-  const long before = amp::test::allocations();
-  long created = 0;
-  for (int step = 1; step <= 6000; ++step) {
-    const double regime = (step / 600) % 3;  // three kinds of surroundings in turn
-    for (double& r : readings) r = rng.uniform(0.1 * regime, 2.0);
-    position += schemas.velocity(position, goal, readings, directions, p, rng);
-    trends.step(readings, position);
-    if (step % 12 == 0) {
-      const int cases = sins.cases();
-      p = sins.end_interval(trends.close_interval(), rng);
-      created += sins.cases() - cases;
+  for (const double outcome_rate : {0.0, 0.5}) {  // the interval rule, and the outcome credit
+    SCOPED_TRACE(outcome_rate);
+    learn::CaseSettings cs;
+    cs.case_length = 20;
+    cs.max_cases = 10;
+    cs.outcome_rate = outcome_rate;
+    CaseBasedParameters sins(cs);
+    MotorSchemas schemas;
+    EnvironmentTrends trends(2.0, 1.0);
+    core::Rng rng(4);
+    std::vector<double> readings(16);
+    std::vector<Eigen::Vector2d> directions(16);
+    for (int i = 0; i < 16; ++i) directions[i] = Eigen::Vector2d(std::cos(i * 0.3927), std::sin(i * 0.3927));
+    Eigen::Vector2d position(1, 1);
+    const Eigen::Vector2d goal(30, 30);
+    SchemaParameters p = sins.begin_world(rng);
+    trends.reset(position, goal);
+    const long before = amp::test::allocations();
+    long created = 0;
+    for (int step = 1; step <= 6000; ++step) {
+      const double regime = (step / 600) % 3;  // three kinds of surroundings in turn
+      for (double& r : readings) r = rng.uniform(0.1 * regime, 2.0);
+      position += schemas.velocity(position, goal, readings, directions, p, rng);
+      trends.step(readings, position);
+      if (step % 12 == 0) {
+        const int cases = sins.cases();
+        p = sins.end_interval(trends.close_interval(), rng);
+        created += sins.cases() - cases;
+      }
+      if (step % 500 == 0) {  // a world ends, solved every other time, and the next begins
+        sins.end_world(step % 1000 == 0, 0.5);
+        p = sins.begin_world(rng);
+      }
     }
+    EXPECT_EQ(amp::test::allocations() - before, 2 * created);
   }
-  EXPECT_EQ(amp::test::allocations() - before, 2 * created);
 }
 
 }  // namespace

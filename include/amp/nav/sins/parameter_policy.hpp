@@ -28,6 +28,9 @@ class ParameterPolicy {
   // A control interval ended with these perceived inputs (EnvironmentTrends::close_interval): the
   // parameters for the next one. Allocates nothing.
   virtual SchemaParameters end_interval(const learn::CaseInputs& inputs, core::Rng& rng) = 0;
+  // The world ended: solved or not, after this share of its step limit. (A world stopped by a
+  // time limit does not end.)
+  virtual void end_world(bool /*solved*/, double /*steps_fraction*/) {}
   // Cases in memory (0 for the systems that keep none).
   virtual int cases() const { return 0; }
 };
@@ -83,6 +86,14 @@ class CaseBasedParameters final : public ParameterPolicy {
   SchemaParameters begin_world(core::Rng& rng) override;
   SchemaParameters end_interval(const learn::CaseInputs& inputs, core::Rng& rng) override;
   int cases() const override { return library_.size(); }
+  // With CaseSettings::outcome_rate > 0, the outcome credit: the world's return
+  // R = solved ? 1 - steps_fraction : 0 against a running baseline b (b += 0.1 (R - b); the first
+  // world sets it), and every output sample the world used moves toward the mean of the outputs
+  // installed from it by outcome_rate x (R - b), away from them when R < b (REINFORCE with a
+  // baseline, Williams 1992, on the adapt step's exploration). Otherwise nothing.
+  void end_world(bool solved, double steps_fraction) override;
+  static constexpr double kBaselineRate = 0.1;
+  double baseline() const { return baseline_; }
 
   const learn::CaseLibrary& library() const { return library_; }
   const learn::CaseHistory& history() const { return history_; }
@@ -95,6 +106,12 @@ class CaseBasedParameters final : public ParameterPolicy {
   SchemaParameters initial_, current_;
   double stall_exploration_;
   std::optional<CaseCycle> last_;
+  // Per output sample (case j, sample q at j * case_length + q): the outputs installed from it this
+  // world, summed, and how many times (sized for max_cases up front: nothing allocates per step).
+  std::vector<learn::CaseOutputs> installed_sum_;
+  std::vector<int> installed_count_;
+  double baseline_ = 0.0;
+  bool has_baseline_ = false;
 };
 
 // The system by name: "static" (StaticParameters(initial)), "random", or "adaptive" (also "sins":
