@@ -71,7 +71,7 @@ void register_sampler_prms(PlannerRegistry& registry) {
                  o.max_steps = s.max_steps;
                  PrmParts parts;
                  parts.sampler = [o](const PlanningContext& ctx) -> std::unique_ptr<Sampler> {
-                   return std::make_unique<ObprmSampler>(ctx.space, ctx.checker, o);
+                   return std::make_unique<ObprmSampler>(ctx.space, ctx.checker, o, nullptr, ctx.stop);
                  };
                  parts.observer = observer(-1.0, 0.0);
                  return std::make_unique<Prm>(prm_settings(s), std::move(parts));

@@ -39,7 +39,7 @@ std::vector<HybridSampler::Arm> make_uas_samplers(const PlanningContext& ctx,
                                                                   GaussianSamplerSettings{r, 100}, domain)});
   arms.push_back({"gaussian_2r", std::make_unique<GaussianSampler>(ctx.space, ctx.checker,
                                                                    GaussianSamplerSettings{2 * r, 100}, domain)});
-  arms.push_back({"obprm", std::make_unique<ObprmSampler>(ctx.space, ctx.checker, ObprmSamplerSettings{}, domain)});
+  arms.push_back({"obprm", std::make_unique<ObprmSampler>(ctx.space, ctx.checker, ObprmSamplerSettings{}, domain, ctx.stop)});
   if (options.bridge) {
     BridgeSamplerSettings b;
     b.d = 2 * r;

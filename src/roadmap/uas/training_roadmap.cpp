@@ -56,7 +56,7 @@ TrainingSet build_training_roadmap(const PlanningContext& ctx, const TrainingSet
   const double r = sampler_distance(ctx.environment, ctx.space, 1.0).d;
   UniformDomainSampler uniform(whole, ctx.checker);
   GaussianSampler gaussian(ctx.space, ctx.checker, GaussianSamplerSettings{r, 100}, whole);
-  ObprmSampler obprm(ctx.space, ctx.checker, ObprmSamplerSettings{}, whole);
+  ObprmSampler obprm(ctx.space, ctx.checker, ObprmSamplerSettings{}, whole, &stop);
   Sampler* samplers[] = {&uniform, &gaussian, &obprm};
 
   TrainingSet set;

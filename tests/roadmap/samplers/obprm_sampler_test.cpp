@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "amp/core/error.hpp"
+#include "amp/core/stop_condition.hpp"
 #include "roadmap/test_worlds.hpp"
 
 namespace amp::roadmap {
@@ -70,6 +71,34 @@ TEST(ObprmSampler, MaxStepsBoundsTheWalk) {
   // of area 32 x 0.14 = 4.5% of the space, and then only for a ray pointing out of the box.
   EXPECT_LT(found, 40);
   EXPECT_THROW(ObprmSamplerSettings({0, 10}).validate(), ParameterError);
+}
+
+// A box over the whole world: every ray walks in vain until it reaches its end (thousands of CD
+// calls per sample() here, up to max_attempts x max_steps).
+// With a run's stop condition past its deadline the sampler gives up at the first poll (one
+// StopPoll stride of CD calls), and once stopped it makes no CD call at all. (A run at a fine
+// resolution overshot its time limit by 80 ms in one sample() before the poll.)
+TEST(ObprmSampler, AStoppedRunEndsTheWalkWithinOnePollStride) {
+  world::Problem p = test::point_problem(true);
+  p.environment = std::make_shared<test::BoxEnvironment>(std::vector<test::Box>{{-1, -1, 11, 11}}, test::RobotKind::kPoint);
+  core::Counters counters;
+  const auto checker = p.environment->make_checker(counters);
+  const core::StopCondition expired(0.0, 1000);
+  ObprmSampler o(*p.space, *checker, ObprmSamplerSettings{100, 1000}, nullptr, &expired);
+  core::Rng rng(6);
+  State q;
+  EXPECT_FALSE(o.sample(rng, q));
+  EXPECT_LE(counters.cd_calls(), core::StopPoll::kStride);
+  EXPECT_GT(counters.cd_calls(), 0u);
+  const auto before = counters.cd_calls();
+  EXPECT_FALSE(o.sample(rng, q));
+  EXPECT_EQ(counters.cd_calls(), before);
+  // Without a stop the same walk runs its course.
+  core::Counters all;
+  const auto unstopped = p.environment->make_checker(all);
+  ObprmSampler free_run(*p.space, *unstopped, ObprmSamplerSettings{100, 1000});
+  EXPECT_FALSE(free_run.sample(rng, q));
+  EXPECT_GT(all.cd_calls(), core::StopPoll::kStride);
 }
 
 }  // namespace

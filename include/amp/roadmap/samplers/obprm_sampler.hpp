@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "amp/core/space.hpp"
+#include "amp/core/stop_condition.hpp"
 #include "amp/roadmap/samplers/sampler.hpp"
 #include "amp/roadmap/samplers/sampling_domain.hpp"
 #include "amp/world/validity_checker.hpp"
@@ -18,10 +19,13 @@ struct ObprmSamplerSettings {
 // configuration c, pick a random direction (towards a uniform state u) and walk from c at the space's
 // resolution until the first free configuration, which lies within one resolution step of the
 // obstacle's surface. A ray that reaches u, leaves the domain or exceeds max_steps is abandoned.
+// One sample() may cost max_attempts x max_steps CD calls (100,000 by default: a fine resolution
+// walks every ray to its end), so `stop` (optional) is polled between them and a stopped sample()
+// gives up.
 class ObprmSampler final : public Sampler {
  public:
   ObprmSampler(const core::Space& space, const world::ValidityChecker& checker, ObprmSamplerSettings settings = {},
-               std::shared_ptr<const SamplingDomain> domain = nullptr);
+               std::shared_ptr<const SamplingDomain> domain = nullptr, const core::StopCondition* stop = nullptr);
   bool sample(core::Rng& rng, State& out) override;
 
  private:
@@ -29,6 +33,7 @@ class ObprmSampler final : public Sampler {
   const world::ValidityChecker* checker_;
   ObprmSamplerSettings settings_;
   std::shared_ptr<const SamplingDomain> domain_;
+  const core::StopCondition* stop_;
   State c_, target_, q_;
 };
 
