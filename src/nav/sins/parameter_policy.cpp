@@ -38,8 +38,7 @@ learn::CaseLibrary first_library(const learn::CaseSettings& settings, const Sche
 CaseBasedParameters::CaseBasedParameters(learn::CaseSettings settings, SchemaParameters initial,
                                          double stall_exploration)
     : library_(first_library(settings, initial)), history_(settings.case_length), initial_(initial), current_(initial),
-      stall_exploration_(stall_exploration) {
-  initial_.validate();
+      stall_exploration_(stall_exploration) {  // first_library validated the settings and `initial`
   const auto slots = static_cast<std::size_t>(settings.max_cases) * static_cast<std::size_t>(settings.case_length);
   if (settings.outcome_rate > 0.0) installed_sum_.assign(slots, learn::CaseOutputs{}), installed_count_.assign(slots, 0);
   if (!(stall_exploration >= 0.0 && stall_exploration <= 1.0)) {
