@@ -11,7 +11,9 @@ inline const world::Problem& bundled_problem(const std::string& file) {
   static std::map<std::string, world::Problem> loaded;
   auto it = loaded.find(file);
   if (it == loaded.end()) {
-    it = loaded.emplace(file, world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/" + file)).first;
+    std::string path = AMP_SOURCE_DIR "/problems/";
+    path += file;  // appended in place: GCC 12 at -O1 warns falsely on a temporary's operator+
+    it = loaded.emplace(file, world::load_problem(path)).first;
   }
   return it->second;
 }

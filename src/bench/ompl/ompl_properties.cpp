@@ -173,7 +173,7 @@ std::vector<Property> experiment_properties(const Experiment& e, std::size_t pro
   auto text = [&p](std::string words, std::string v) {
     v = field_text(v);
     // The parser splits "name TYPE = value" at " = ".
-    for (std::size_t at = v.find(" = "); at != std::string::npos; at = v.find(" = ", at)) v.replace(at, 3, " =");
+    for (std::size_t at = v.find(" = "); at != std::string::npos; at = v.find(" = ", at)) v.erase(at + 2, 1);  // " ="
     if (!v.empty()) p.push_back({std::move(words), SqlType::kText, std::move(v)});
   };
   text("amp_experiment", e.name);

@@ -74,11 +74,18 @@ NavigationOutcome PolicyNavigator::run(const NavTask& task, const core::StopCond
   const GridNavWorld& world = map_world(task, "policy-search");
   NavigationOutcome out;
   const auto t0 = std::chrono::steady_clock::now();
-  const PolicyPlan plan = plan_policy(world, task.start, task.goal, drive_.footprint(task.robot_radius), policy_.planner(drive_));
+  const PolicyPlan plan = plan_policy(world, task.start, task.goal, drive_.footprint(task.robot_radius), policy_.planner(drive_), &stop);
   out.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Simulator sim = unicycle_simulator(task, drive_);
-  WaypointController controller(plan.search.final, policy_.controller(drive_));
-  const Execution e = execute(sim, controller, drive_.noise(), drive_.max_time, rng, &stop);
+  // A plan cut short by the stop is not driven: the run has no time left (the robot stays at its start).
+  Execution e;
+  if (!plan.stopped) {
+    WaypointController controller(plan.search.final, policy_.controller(drive_));
+    e = execute(sim, controller, drive_.noise(), drive_.max_time, rng, &stop);
+  } else {
+    e.trace = {sim.state().position};
+    e.min_clearance = sim.footprint().clearance(sim.next_world(), sim.state().position, sim.state().heading);
+  }
   record_execution(e, stop.fired(), out.record);
   out.record.nodes = plan.search.final.size();
   out.record.extra["waypoints"] = static_cast<double>(plan.search.final.size());

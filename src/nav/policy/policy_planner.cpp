@@ -23,15 +23,16 @@ std::string footprint_text(const Footprint& f) {
 }  // namespace
 
 PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal, double radius,
-                       const PolicyPlannerSettings& settings) {
+                       const PolicyPlannerSettings& settings, const core::StopCondition* stop) {
   if (!(radius > 0.0) || !std::isfinite(radius)) {
     throw ParameterError("the footprint's radius must be > 0, got " + std::to_string(radius));
   }
-  return plan_policy(world, start, goal, Footprint::disc(radius), settings);
+  return plan_policy(world, start, goal, Footprint::disc(radius), settings, stop);
 }
 
 PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, const Eigen::Vector2d& goal,
-                       const Footprint& footprint, const PolicyPlannerSettings& settings) {
+                       const Footprint& footprint, const PolicyPlannerSettings& settings,
+                       const core::StopCondition* stop) {
   // Value iteration and the grid path treat the footprint as one of its discs, which any pose of it
   // needs room for; the waypoints are then checked with the whole footprint at their headings.
   const double radius = footprint.disc_radius();
@@ -61,18 +62,25 @@ PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, 
     return best;
   };
   const int from = cell_of(start), to = cell_of(goal);
-  if (from >= 0 && to >= 0) dp.compute(to);
+  const auto stopped = [stop] { return stop != nullptr && stop->time_up(); };
+  PolicyPlan plan;
+  if (from >= 0 && to >= 0 && !dp.compute(to, stopped)) {
+    plan.stopped = true;  // value iteration cut short: no path to project
+    return plan;
+  }
   if (from < 0 || to < 0 || dp.distance(from) == world::GridCostToGo::kUnreachable) {
     world::GridCostToGo point(world::inflate(world.obstacles(), {}));
     const Eigen::Vector2i a = grid.world_to_cell(start), b = grid.world_to_cell(goal);
-    point.compute(point.index(b.x(), b.y()));
+    if (!point.compute(point.index(b.x(), b.y()), stopped)) {
+      plan.stopped = true;  // which refusal applies is not known yet
+      return plan;
+    }
     if (point.distance(point.index(a.x(), a.y())) < world::GridCostToGo::kUnreachable) {
       throw ParameterError("no passage wide enough for the footprint (" + footprint_text(footprint) +
                            ") joins the start and the goal");
     }
     throw ParameterError("the goal " + point_text(goal) + " is not reachable from the start " + point_text(start));
   }
-  PolicyPlan plan;
   const std::vector<int> cells = dp.path(from);
   for (int c : cells) plan.dp_path.push_back(grid.cell_center(c % grid.width(), c / grid.width()));
   const GridFrame frame{grid.width(), grid.resolution(), grid.origin()};
@@ -85,7 +93,8 @@ PolicyPlan plan_policy(const GridNavWorld& world, const Eigen::Vector2d& start, 
     throw ParameterError("no passage wide enough for the footprint (" + footprint_text(footprint) +
                          ") at its heading: the grid path's turns or segments hit an obstacle");
   }
-  plan.search = search_policy(std::move(projected), value, settings.search);
+  plan.search = search_policy(std::move(projected), value, settings.search, stop);
+  plan.stopped = plan.search.stopped;
   if (!footprint.is_disc()) {
     plan.squared_crossings = square_crossings(value, plan.search.final, grid.resolution());
     if (plan.squared_crossings > 0) plan.search.value_final = value.total(plan.search.final);

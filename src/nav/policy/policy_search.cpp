@@ -99,11 +99,16 @@ class SettledSteps {
   std::size_t reach_;
 };
 
-// One sweep of Table 1, step 3; returns the value gained.
-double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s, SettledSteps& settled) {
+// One sweep of Table 1, step 3; returns the value gained. Ends early, setting `stopped`, when `stop` fires.
+double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s, SettledSteps& settled,
+             const core::StopCondition* stop, bool& stopped) {
   double gained = 0.0;
   for (std::size_t j = 1; j + 1 < w.size(); ++j) {
     if (settled.holds(w, j)) continue;
+    if (stop != nullptr && stop->time_up()) {
+      stopped = true;
+      break;
+    }
     const double before = value.segments(w, j - 1, j + 1);
     double best = before;
     // Eq. 11: toward both neighbours, away from the nearest obstacle point.
@@ -142,11 +147,12 @@ double sweep(std::vector<State>& w, const PolicyValue& value, const PolicySearch
   return gained;
 }
 
-int search(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s, SettledSteps& settled) {
+int search(std::vector<State>& w, const PolicyValue& value, const PolicySearchSettings& s, SettledSteps& settled,
+           const core::StopCondition* stop, bool& stopped) {
   int sweeps = 0;
-  while (sweeps < s.max_sweeps) {
+  while (sweeps < s.max_sweeps && !stopped) {
     ++sweeps;
-    const double gained = sweep(w, value, s, settled);
+    const double gained = sweep(w, value, s, settled, stop, stopped);
     face_along(w);
     if (gained < s.tolerance) break;
   }
@@ -155,7 +161,8 @@ int search(std::vector<State>& w, const PolicyValue& value, const PolicySearchSe
 
 }  // namespace
 
-PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& value, const PolicySearchSettings& settings) {
+PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& value, const PolicySearchSettings& settings,
+                                 const core::StopCondition* stop) {
   settings.validate();
   PolicySearchResult out;
   for (State& w : initial) w[3] = std::clamp(w[3], settings.v_min, settings.v_max);
@@ -164,11 +171,11 @@ PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& 
   out.value_projected = value.total(initial);
   std::vector<State> w = std::move(initial);
   SettledSteps settled(w.size(), value.footprint().is_disc());
-  out.sweeps += search(w, value, settings, settled);
+  out.sweeps += search(w, value, settings, settled, stop, out.stopped);
   out.searched = w;
   out.value_searched = value.total(w);
   double current = out.value_searched;
-  while (out.insertions < settings.max_insertions && w.size() >= 2) {
+  while (!out.stopped && out.insertions < settings.max_insertions && w.size() >= 2) {
     // Eq. 10: the lowest immediate reward inside a segment, below the reward at both its ends.
     std::size_t at = w.size();
     PolicyValue::Lowest pick;
@@ -189,8 +196,9 @@ PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& 
     inserted[3] = pick.v;
     trial.insert(trial.begin() + static_cast<std::ptrdiff_t>(at) + 1, inserted);
     settled.insert(at + 1);  // a rejected trial ends the search, so `settled` need not go back
-    const int sweeps = search(trial, value, settings, settled);
+    const int sweeps = search(trial, value, settings, settled, stop, out.stopped);
     out.sweeps += sweeps;
+    if (out.stopped) break;  // a trial cut short is not compared: the last kept policy stands
     const double v = value.total(trial);
     if (!(v > current + settings.tolerance)) break;  // no insertion raises the value: done
     w = std::move(trial);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "amp/core/error.hpp"
+#include "amp/core/stop_condition.hpp"
 #include "amp/nav/footprint.hpp"
 #include "amp/nav/grid_nav_world.hpp"
 #include "amp/nav/policy/footprint_drive.hpp"
@@ -96,6 +97,29 @@ TEST(PolicyPlanner, BadRequestsGetOneLineErrors) {
   EXPECT_NE(message(lab(false), V(1, 1), V(3.5, 4.3), 0.27).find("not reachable"), std::string::npos);
   EXPECT_NE(message(world, V(1, 3.55), V(3.5, 4.3), 0.27).find("start"), std::string::npos);
   EXPECT_NE(message(world, V(1, 1), V(3.9, 4.3), 0.27).find("goal"), std::string::npos);
+}
+
+// A run's time limit reaches into planning: value iteration over the lab's 8,000 cells reads the
+// stop every 4,096 cells, and the search before each waypoint's step.
+TEST(PolicyPlanner, AnExpiredStopEndsValueIterationAndTheSearch) {
+  const auto world = lab();
+  const V start(1.0, 1.0), goal(3.5, 4.3);
+  const core::StopCondition expired(0.0, 1000);
+  const PolicyPlan cut = plan_policy(*world, start, goal, 0.27, {}, &expired);
+  EXPECT_TRUE(cut.stopped);
+  EXPECT_TRUE(cut.dp_path.empty());
+  EXPECT_TRUE(cut.search.final.empty());
+
+  // The search stopped before its first step keeps the projected policy as it is.
+  const PolicyPlan full = plan_policy(*world, start, goal, 0.27);
+  EXPECT_FALSE(full.stopped);
+  const PolicyValue value(*world, Footprint::disc(0.27), PolicyRewardSettings{});
+  const PolicySearchResult r = search_policy(full.search.projected, value, {}, &expired);
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.insertions, 0);
+  ASSERT_EQ(r.final.size(), full.search.projected.size());
+  for (std::size_t j = 0; j < r.final.size(); ++j) EXPECT_EQ(r.final[j], full.search.projected[j]) << j;
+  EXPECT_DOUBLE_EQ(r.value_final, r.value_projected);
 }
 
 }  // namespace

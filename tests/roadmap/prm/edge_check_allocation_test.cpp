@@ -14,7 +14,7 @@ namespace amp::roadmap {
 namespace {
 
 TEST(EdgeCheckAllocation, StraightLineEdgesOnTheBundledMazeAllocateNothingAfterWarmUp) {
-  const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/maze.yaml");
+  const world::Problem p = world::load_problem(AMP_SOURCE_DIR "/problems/maze.yaml");
   core::Counters counters;
   const auto checker = p.environment->make_checker(counters);
   StraightLinePlanner lp(*p.space, *checker);
@@ -38,7 +38,7 @@ TEST(EdgeCheckAllocation, StraightLineEdgesOnTheBundledMazeAllocateNothingAfterW
 // the largest search, searching again allocates nothing (none per expanded cell). On the planar arm,
 // whose checker allocates nothing (FCL's checks of the SCARA's cylinders do).
 TEST(EdgeCheckAllocation, GridAStarOnTheArmAllocatesNothingOnceGrown) {
-  const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/linkage.yaml");
+  const world::Problem p = world::load_problem(AMP_SOURCE_DIR "/problems/linkage.yaml");
   core::Counters counters;
   const auto checker = p.environment->make_checker(counters);
   GridAStarPlanner astar(*p.space, *checker);

@@ -26,6 +26,7 @@
 #include "support/exact_geometry.hpp"
 #include "support/planner_runs.hpp"
 #include "support/random_problems.hpp"
+#include "support/sanitizer_build.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -166,7 +167,7 @@ TEST_P(PlanarProperties, RunsKeepTheirLimitsAndSolvedPathsAreCertifiedAndThreadI
   const int shard = GetParam(), per_shard = kCases / kShards;
   test::TempDir dir("planar-" + std::to_string(shard));
   std::vector<Case> cases;
-  for (int i = shard * per_shard; i < (shard + 1) * per_shard; ++i) cases.push_back(make_case(i, dir.path()));
+  for (int i = shard * per_shard; i < shard * per_shard + test::case_share(per_shard); ++i) cases.push_back(make_case(i, dir.path()));
   test::run_shard("shard " + std::to_string(shard), cases, expect_solved_path);
 }
 

@@ -20,6 +20,7 @@
 #include "support/exact_geometry.hpp"
 #include "support/planner_runs.hpp"
 #include "support/random_problems.hpp"
+#include "support/sanitizer_build.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -51,7 +52,7 @@ double distance(const Solid& s, const Vec3& p) {
 }
 
 struct Model {
-  Vec3 lo, hi;
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
   std::vector<Solid> obstacles;
   bool rigid = false;                // SE3 body of spheres, else a sphere robot in R3
   std::vector<Vec3> centres;         // body frame
@@ -231,7 +232,7 @@ TEST_P(SpatialProperties, RunsKeepTheirLimitsAndSolvedPathsAreCertifiedAndThread
   const int shard = GetParam(), per_shard = kCases / kShards;
   test::TempDir dir("spatial-" + std::to_string(shard));
   std::vector<Case> cases;
-  for (int i = shard * per_shard; i < (shard + 1) * per_shard; ++i) cases.push_back(make_case(i, dir.path()));
+  for (int i = shard * per_shard; i < shard * per_shard + test::case_share(per_shard); ++i) cases.push_back(make_case(i, dir.path()));
   test::run_shard("shard " + std::to_string(shard), cases, expect_solved_path);
 }
 

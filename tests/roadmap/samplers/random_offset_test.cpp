@@ -16,7 +16,7 @@ namespace amp::roadmap {
 namespace {
 
 const world::Problem& walls() {
-  static const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/walls.yaml");
+  static const world::Problem p = world::load_problem(AMP_SOURCE_DIR "/problems/walls.yaml");
   return p;
 }
 

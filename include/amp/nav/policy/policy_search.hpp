@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "amp/core/state.hpp"
+#include "amp/core/stop_condition.hpp"
 #include "amp/nav/policy/policy_value.hpp"
 
 namespace amp::nav {
@@ -25,6 +26,7 @@ struct PolicySearchResult {
   double value_projected = 0.0, value_searched = 0.0, value_final = 0.0;
   int sweeps = 0;      // over every search
   int insertions = 0;  // waypoints inserted and kept
+  bool stopped = false;  // `stop` fired: `final` is the last policy kept (every move in it was proved free)
 };
 
 // Policy search of "Policy search seeded by a value function" (Table 1, steps 3-5). For each inner
@@ -36,8 +38,10 @@ struct PolicySearchResult {
 // lowest immediate reward between two waypoints where it is below the reward at both (eq. 10), the
 // search runs again, and insertion stops when it no longer raises the value. Headings follow the
 // segments (each waypoint faces along the one it begins); turn rates stay 0. The start and the goal
-// never move. Deterministic.
-PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& value, const PolicySearchSettings& settings = {});
+// never move. Deterministic. `stop` (optional) is read before each waypoint's step, which evaluates
+// the value and proves segments free several times: the search ends there, keeping what it has.
+PolicySearchResult search_policy(std::vector<State> initial, const PolicyValue& value, const PolicySearchSettings& settings = {},
+                                 const core::StopCondition* stop = nullptr);
 
 // Each waypoint faces along the segment it begins (the last along the one it ends); turn rates 0.
 void face_along(std::vector<State>& w);
