@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <random>
 #include <vector>
@@ -105,5 +106,22 @@ void BM_DiscClearanceOffice(benchmark::State& state) {
   state.counters["clearance/s"] = benchmark::Counter(double(counters.clearance_calls()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_DiscClearanceOffice);
+
+// The exact distance to the nearest blocked square on the office map, and the same capped at
+// range(0) cm (as DWA scores clearance): the capped query skips rows beyond the cap and, far from
+// every square, the row scan itself.
+void BM_PointDistanceOffice(benchmark::State& state) {
+  const amp::world::GridObstacles obstacles(office());
+  const auto states = random_states<2>(obstacles.grid());
+  const double limit = state.range(0) > 0 ? state.range(0) / 100.0 : std::numeric_limits<double>::infinity();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Eigen::Vector2d p(states[i][0], states[i][1]);
+    benchmark::DoNotOptimize(obstacles.point_distance_up_to(p, limit));
+    i = (i + 1) % states.size();
+  }
+  state.counters["queries/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_PointDistanceOffice)->Arg(0)->Arg(100)->Arg(30);
 
 }  // namespace

@@ -72,6 +72,15 @@ double Footprint::clearance(const NavWorld& world, const Eigen::Vector2d& p, dou
   return least;
 }
 
+double Footprint::clearance_up_to(const NavWorld& world, const Eigen::Vector2d& p, double heading, double cap) const {
+  double least = cap;
+  all_placed(p, heading, [&](const Eigen::Vector2d& q) {
+    least = std::min(least, world.clearance_up_to(q, radius_, least));
+    return true;
+  });
+  return least;
+}
+
 bool Footprint::turn_free(const NavWorld& world, const Eigen::Vector2d& p, double from, double turn) const {
   if (!free(world, p, from)) return false;
   if (reach_ == 0.0 || turn == 0.0) return true;

@@ -67,6 +67,26 @@ TEST(Footprint, CheckedAtItsHeadingInTheDoor) {
   EXPECT_TRUE(Footprint::disc(0.27).turn_free(*world, door, 0.0, kPi));
 }
 
+// The capped clearance DWA scores with is min(exact, cap) for discs and rectangles, overlapping,
+// in the door and in the open; a polygon world answers through the default, a map through its own.
+TEST(Footprint, CappedClearanceIsTheExactClearanceCapped) {
+  const auto world = test::lab();
+  core::Rng rng(3);
+  int capped = 0, below = 0;
+  for (const Footprint& f : {Footprint::disc(0.27), Footprint::rectangle(0.7, 0.54)}) {
+    for (int i = 0; i < 300; ++i) {
+      const V p(rng.uniform(0.0, 4.0), rng.uniform(0.0, 5.0));
+      const double heading = rng.uniform(-kPi, kPi), exact = f.clearance(*world, p, heading);
+      for (const double cap : {0.005, 0.1, 1.0}) {
+        ASSERT_EQ(f.clearance_up_to(*world, p, heading, cap), std::min(exact, cap)) << p.transpose() << " " << cap;
+        (exact >= cap ? capped : below) += 1;
+      }
+    }
+  }
+  EXPECT_GT(capped, 300);
+  EXPECT_GT(below, 300);
+}
+
 TEST(Footprint, TheSimulatorNeverTurnsARectangleIntoTheDoorFrame) {
   const auto timeline = std::make_shared<const WorldTimeline>(test::lab(), std::vector<WorldEvent>{});
   UnicycleDiscSettings robot;

@@ -47,6 +47,8 @@ class Footprint {
   bool free(const NavWorld& world, const Eigen::Vector2d& p, double heading) const;
   // The least clearance of the discs: < 0 when one overlaps an obstacle.
   double clearance(const NavWorld& world, const Eigen::Vector2d& p, double heading) const;
+  // min(clearance(world, p, heading), cap), exact, and cheaper far from obstacles on a map.
+  double clearance_up_to(const NavWorld& world, const Eigen::Vector2d& p, double heading, double cap) const;
   // Whether the footprint is free all along the turn in place at p from heading `from` by `turn`
   // radians (either sign), by conservative advancement on the clearance: a turn by c / reach
   // moves no disc by more than c. A disc footprint turns freely wherever it is free.

@@ -23,6 +23,9 @@ class GridNavWorld final : public NavWorld {
   const Eigen::AlignedBox2d& bounds() const override { return extent_; }
   bool disc_free(const Eigen::Vector2d& p, double r) const override { return obstacles_.disc_free(p, r); }
   NearestObstacle nearest_obstacle(const Eigen::Vector2d& p) const override;
+  double distance_up_to(const Eigen::Vector2d& p, double limit) const override {
+    return obstacles_.point_distance_up_to(p, limit);
+  }
   double ray_cast(const Eigen::Vector2d& p, const Eigen::Vector2d& dir, double max_range) const override;
   // Sets cells (and the cells under shapes) occupied or free on a copy of the map.
   std::shared_ptr<const NavWorld> changed(const ObstacleChange& change) const override;

@@ -1,4 +1,7 @@
 #pragma once
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <memory>
 
 #include <Eigen/Core>
@@ -28,6 +31,11 @@ class NavWorld {
   virtual bool disc_free(const Eigen::Vector2d& p, double r) const = 0;
   // Distance from p to the nearest obstacle (or the outside) and the point where it is.
   virtual NearestObstacle nearest_obstacle(const Eigen::Vector2d& p) const = 0;
+  // min(nearest_obstacle(p).distance, limit), exact. Worlds whose exact query costs more the
+  // farther the obstacle (a map's row scan) answer a capped one sooner.
+  virtual double distance_up_to(const Eigen::Vector2d& p, double limit) const {
+    return std::min(nearest_obstacle(p).distance, limit);
+  }
   // Distance from p along the unit direction `dir` to the first obstacle or the outside, at most
   // max_range; 0 when p is in an obstacle or outside.
   virtual double ray_cast(const Eigen::Vector2d& p, const Eigen::Vector2d& dir, double max_range) const = 0;
@@ -37,6 +45,13 @@ class NavWorld {
 
   // Clearance of a disc of radius r at p: distance to the nearest obstacle minus r (< 0: overlap).
   double clearance(const Eigen::Vector2d& p, double r) const { return nearest_obstacle(p).distance - r; }
+  // min(clearance(p, r), cap), exact to the bit: the distance is capped at the least limit whose
+  // rounded clearance reaches cap, so that every distance beyond it would have given cap too.
+  double clearance_up_to(const Eigen::Vector2d& p, double r, double cap) const {
+    double limit = r + cap;
+    while (limit - r < cap) limit = std::nextafter(limit, std::numeric_limits<double>::infinity());
+    return std::min(distance_up_to(p, limit) - r, cap);
+  }
 };
 
 }  // namespace amp::nav

@@ -31,6 +31,9 @@ class GridObstacles {
   // Distance from p to the nearest blocked square or the map's outside, and the nearest point
   // (0 and p itself when p is in a blocked cell or outside the map).
   double point_distance(const Eigen::Vector2d& p, Eigen::Vector2d& nearest) const;
+  // min(point_distance(p), limit), exact: most queries far from every square end at the distance
+  // transform's bound, and no row beyond the limit is scanned (a capped clearance, as DWA scores it).
+  double point_distance_up_to(const Eigen::Vector2d& p, double limit) const;
   // A polygon (world frame, n >= 3 vertices, simple) is free iff it lies inside the map and its
   // closed region meets no blocked square.
   bool polygon_free(const Eigen::Vector2d* v, int n) const;
@@ -42,6 +45,8 @@ class GridObstacles {
  private:
   // Nearest blocked square to p among the row's candidates; updates best (squared) and its point.
   void scan_row(const Eigen::Vector2d& p, int cx, int row, double& best_sq, Eigen::Vector2d& best_point) const;
+  // point_distance, exact below `limit`; at or beyond it, some distance >= limit.
+  double nearest_within(const Eigen::Vector2d& p, double limit, Eigen::Vector2d& nearest) const;
   Eigen::Vector2i clamped_cell(const Eigen::Vector2d& p) const;
 
   std::shared_ptr<const OccupancyGrid> grid_;

@@ -78,7 +78,8 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
     double v, w, heading, clearance;
   };
   constexpr double kFirstCheck = 0.005;  // m
-  const double here = f.clearance(world, s.position, s.heading);
+  // Only a clearance below kFirstCheck matters here (capped there, the tests below are unchanged).
+  const double here = f.clearance_up_to(world, s.position, s.heading, kFirstCheck);
   std::vector<Sample> admissible;
   admissible.reserve(static_cast<std::size_t>(settings_.v_samples * settings_.omega_samples));
   auto at = [](double lo, double hi, int i, int n) { return n == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * i / (n - 1); };
@@ -108,11 +109,12 @@ Eigen::Vector2d DynamicWindow::command(const Simulator& sim) {
       if (length > 0.0 && here < kFirstCheck) {
         double h0 = 0.0;
         const Eigen::Vector2d first = pose(settings_.sim_time * std::min(1.0, kFirstCheck / length), h0);
-        free = f.clearance(world, first, h0) > here;
+        free = f.clearance_up_to(world, first, h0, kFirstCheck) > here;
       }
       for (int j = 1; j <= n && free; ++j) {
         end = pose(settings_.sim_time * j / n, heading);
-        const double c = f.clearance(world, end, heading);
+        // Capped: the score uses min(least, cap), and the cap is > 0 so `free` is unchanged.
+        const double c = f.clearance_up_to(world, end, heading, settings_.clearance_cap);
         least = std::min(least, c);
         free = c > 0.0;
       }

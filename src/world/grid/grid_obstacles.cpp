@@ -105,8 +105,12 @@ Eigen::Vector2i GridObstacles::clamped_cell(const Eigen::Vector2d& p) const {
 
 void GridObstacles::scan_row(const Eigen::Vector2d& p, int cx, int row, double& best_sq,
                              Eigen::Vector2d& best_point) const {
-  const Eigen::AlignedBox2d strip = grid_->cell_box(0, row);
-  if (sq(std::max({0.0, strip.min().y() - p.y(), p.y() - strip.max().y()})) >= best_sq) return;
+  // Scalar arithmetic on the squares' sides (what cell_box would give): this is the inner loop of
+  // every exact clearance on a map, and unoptimised builds do not inline Eigen's temporaries.
+  const double res = grid_->resolution(), ox = grid_->origin().x();
+  const double y0 = grid_->origin().y() + res * row, y1 = y0 + res;
+  const double qy = std::min(std::max(p.y(), y0), y1), dy = p.y() - qy;
+  if (dy * dy >= best_sq) return;
   // The row's nearest blocked squares to p are the nearest left and right of p's column; the
   // neighbours' entries cover p lying on a column boundary up to rounding.
   const std::size_t i = grid_->index(cx, row);
@@ -115,11 +119,12 @@ void GridObstacles::scan_row(const Eigen::Vector2d& p, int cx, int row, double& 
                                       cx + 1 < w ? right_[i + 1] : w};
   for (const std::int32_t x : candidates) {
     if (x < 0 || x >= w) continue;
-    const Eigen::Vector2d q = clamp_to_box(p, grid_->cell_box(x, row));
-    const double d2 = (p - q).squaredNorm();
+    const double x0 = ox + res * x;
+    const double qx = std::min(std::max(p.x(), x0), x0 + res), dx = p.x() - qx;
+    const double d2 = dx * dx + dy * dy;
     if (d2 < best_sq) {
       best_sq = d2;
-      best_point = q;
+      best_point = {qx, qy};
     }
   }
 }
@@ -156,6 +161,15 @@ bool GridObstacles::disc_free(const Eigen::Vector2d& p, double r) const {
 }
 
 double GridObstacles::point_distance(const Eigen::Vector2d& p, Eigen::Vector2d& nearest) const {
+  return nearest_within(p, kInf, nearest);
+}
+
+double GridObstacles::point_distance_up_to(const Eigen::Vector2d& p, double limit) const {
+  Eigen::Vector2d nearest;
+  return std::min(nearest_within(p, limit, nearest), limit);
+}
+
+double GridObstacles::nearest_within(const Eigen::Vector2d& p, double limit, Eigen::Vector2d& nearest) const {
   nearest = p;
   if (!p.allFinite() || !extent_.contains(p)) return 0.0;
   const Eigen::Vector2i c = clamped_cell(p);
@@ -173,6 +187,11 @@ double GridObstacles::point_distance(const Eigen::Vector2d& p, Eigen::Vector2d& 
   const std::size_t i = grid_->index(c.x(), c.y());
   const std::int32_t o = edt_.nearest(i);
   if (o < 0) return std::sqrt(best_sq);
+  const double res = grid_->resolution();
+  // No blocked square is nearer than D - sqrt(2) cells (see disc_free): beyond the limit, no scan.
+  if ((std::sqrt(edt_.squared_distance(i)) - std::numbers::sqrt2 - kBoundSlack) * res >= limit) {
+    return std::sqrt(best_sq);
+  }
   const int w = grid_->width();
   const Eigen::Vector2d q = clamp_to_box(p, grid_->cell_box(o % w, o / w));
   if ((p - q).squaredNorm() < best_sq) {
@@ -180,10 +199,10 @@ double GridObstacles::point_distance(const Eigen::Vector2d& p, Eigen::Vector2d& 
     nearest = q;
   }
   // The EDT's square is near-optimal; rows outward from p's settle the exact nearest. Row c.y +- k
-  // is at least (k - 1) cells away.
-  const double res = grid_->resolution();
+  // is at least (k - 1) cells away; rows beyond the limit cannot change an answer capped there.
+  const double limit_sq = sq(limit);
   for (int k = 0;; ++k) {
-    if (k >= 1 && sq((k - 1) * res) >= best_sq) break;
+    if (k >= 1 && sq((k - 1) * res) >= std::min(best_sq, limit_sq)) break;
     const bool below = c.y() - k >= 0, above = c.y() + k < grid_->height();
     if (!below && !above) break;
     if (below) scan_row(p, c.x(), c.y() - k, best_sq, nearest);

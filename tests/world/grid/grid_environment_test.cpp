@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -179,6 +180,28 @@ TEST(GridEnvironment, DiscClearanceMatchesBruteForce) {
   }
   EXPECT_EQ(counters.clearance_calls(), 1000u);
   EXPECT_EQ(counters.cd_calls(), 0u);
+}
+
+// The capped distance is min(exact, limit) to the last bit, for limits below, at and beyond the
+// distance transform's bound, and 0 inside a blocked cell or outside the map.
+TEST(GridObstacles, CappedDistanceIsTheExactDistanceCapped) {
+  std::mt19937 gen(12);
+  std::uniform_real_distribution<double> ux(-1.2, 2.2), uy(0.3, 2.7);
+  int capped = 0, below = 0;
+  for (unsigned seed : {5u, 6u}) {
+    const auto grid = random_grid(seed, 0.03);
+    const GridObstacles obstacles(grid);
+    for (int i = 0; i < 400; ++i) {
+      const Eigen::Vector2d p(ux(gen), uy(gen));
+      const double exact = brute_point_distance(*grid, p);
+      for (const double limit : {0.0, 0.01, 0.08, 0.3, 1.0, std::numeric_limits<double>::infinity()}) {
+        ASSERT_EQ(obstacles.point_distance_up_to(p, limit), std::min(exact, limit)) << p.transpose() << " " << limit;
+        (exact >= limit ? capped : below) += 1;
+      }
+    }
+  }
+  EXPECT_GT(capped, 1000);
+  EXPECT_GT(below, 1000);
 }
 
 // Radii a hair below and above the exact clearance decide the band the distance transform leaves
