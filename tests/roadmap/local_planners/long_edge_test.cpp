@@ -22,7 +22,6 @@ using test::BoxEnvironment;
 using test::RobotKind;
 using test::state2;
 
-constexpr double kNoTimeLimit = 1e9;
 constexpr std::size_t kNoNodeLimit = std::numeric_limits<std::size_t>::max();
 
 // [0,10]^2 with a wall at x in [4.5, 5.5]: an edge from x = 1 to x = 9 crosses it.

@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "amp/core/error.hpp"
@@ -11,8 +10,6 @@
 
 namespace amp::world {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 LoadedWorld parse(const std::string& text) { return parse_planar_world(YamlFields(YAML::Load(text), "p.yaml", "")); }
 
