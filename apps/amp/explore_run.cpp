@@ -123,6 +123,7 @@ nlohmann::ordered_json full_record(const ExploreResult& r) {
                        {"solved", q.solved},
                        {"unsolvable", q.unsolvable},
                        {"replans", q.replans},
+                       {"left_out", q.left_out},
                        {"length", q.length},
                        // +inf (not connected) has no JSON number: null
                        {"shortest", std::isfinite(q.shortest) ? nlohmann::ordered_json(q.shortest) : nlohmann::ordered_json()},

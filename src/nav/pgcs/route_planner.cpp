@@ -150,6 +150,7 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   const double unverified = 1.0 + settings_.unverified_weight;
   for (int w : start_links_) add_arc(s, w, ids_[w] == back ? 1.0 : unverified);
   if (back >= 0 && static_cast<std::size_t>(back) < local_of_.size() && local_of_[back] >= 0 &&
+      std::isfinite(points_[local_of_[back]].x()) &&  // a cluster left out (no point) is not joined
       std::find(start_links_.begin(), start_links_.end(), local_of_[back]) == start_links_.end()) {
     add_arc(s, local_of_[back], 1.0);
   }

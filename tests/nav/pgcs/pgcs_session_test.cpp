@@ -54,18 +54,23 @@ TEST(PgcsSession, ExplorationStaysFreeAndLearnsClusters) {
   }
 }
 
-// A 2 m x 1 m room with a box in its middle.
-NavTask room_task() {
+// A box from (0, 0) to `corner` holding one polygon, a disc of 5 cm exploring from `start`.
+NavTask polygon_task(const char* name, std::vector<V> polygon, V corner, V start) {
   world::Shapes2d s;
-  s.polygons.push_back({{{0.9, 0.35}, {1.1, 0.35}, {1.1, 0.65}, {0.9, 0.65}}});
+  s.polygons.push_back({std::move(polygon)});
   NavTask t;
-  t.name = "room";
+  t.name = name;
   t.robot_radius = 0.05;
-  t.start = V(0.3, 0.5);
+  t.start = start;
   t.goal = t.start;
   t.timeline = std::make_shared<const WorldTimeline>(
-      std::make_shared<const PolygonNavWorld>(s, Eigen::AlignedBox2d(V(0, 0), V(2, 1))), std::vector<WorldEvent>{});
+      std::make_shared<const PolygonNavWorld>(s, Eigen::AlignedBox2d(V(0, 0), corner)), std::vector<WorldEvent>{});
   return t;
+}
+
+// A 2 m x 1 m room with a box in its middle.
+NavTask room_task() {
+  return polygon_task("room", {{0.9, 0.35}, {1.1, 0.35}, {1.1, 0.65}, {0.9, 0.65}}, V(2, 1), V(0.3, 0.5));
 }
 
 TEST(PgcsSession, QueriesDriveFreePathsFromStartToTarget) {
@@ -94,6 +99,30 @@ TEST(PgcsSession, QueriesDriveFreePathsFromStartToTarget) {
     }
   }
   EXPECT_GT(solved, 0);
+}
+
+// Two 2 m x 2 m rooms side by side, joined by a 0.4 m door at the top of the wall between them.
+NavTask two_rooms_task() {
+  return polygon_task("two rooms", {{1.95, 0.0}, {2.05, 0.0}, {2.05, 1.6}, {1.95, 1.6}}, V(4, 2), V(0.5, 1.0));
+}
+
+TEST(PgcsSession, TraceLegsGoThroughTheDoorTheExplorerUsed) {
+  // From the bottom of one room to the bottom of the other: the straight way is the wall. Driven
+  // along the trace, the robot goes up through the door and down, without a block, and it turns
+  // back nowhere: the driven length stays near the shortest.
+  const NavTask task = two_rooms_task();
+  for (std::uint64_t seed : {1, 2, 3}) {
+    PgcsSession s(task, small_run(30000, 0), small_pgcs(), seed);
+    s.explore(30000);
+    const V a(0.5, 0.3), b(3.5, 0.3);
+    const QueryRecord q = s.query(a, b);
+    ASSERT_TRUE(q.solved) << "seed " << seed;
+    EXPECT_EQ(q.replans, 0) << "seed " << seed;
+    expect_free(*task.timeline->base(), q.trace, task.robot_radius);
+    EXPECT_LT((q.trace.back() - b).norm(), 1e-9);
+    EXPECT_GT(q.shortest, 4.0);  // up to the door and down again
+    EXPECT_LT(q.ratio, 1.5) << "seed " << seed;
+  }
 }
 
 TEST(PgcsSession, SameSeedSameRun) {

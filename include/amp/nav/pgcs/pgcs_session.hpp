@@ -16,6 +16,7 @@
 #include "amp/nav/pgcs/edge_memory.hpp"
 #include "amp/nav/pgcs/edge_portals.hpp"
 #include "amp/nav/pgcs/route_planner.hpp"
+#include "amp/nav/pgcs/trace_corridor.hpp"
 #include "amp/nav/random_walk.hpp"
 #include "amp/nav/reference_grid.hpp"
 #include "amp/nav/simulator.hpp"
@@ -57,6 +58,9 @@ struct PgcsRunSettings {
   double unverified_weight = 1.0;            // extra route cost per length of an edge never seen crossed
   bool exemplars = true;                     // drive to each cluster's exemplar, not to its centre
   bool shortcuts = true;                     // between two portals, cut across the cell (not via its point)
+  // Drive a route along the positions the robot has stood at in its clusters' cells (TraceCorridor),
+  // falling back to the legs above when they do not join.
+  bool trace_legs = true;
   static const core::SettingsSchema<PgcsRunSettings>& schema();
   void validate() const { schema().validate(*this); }
 };
@@ -76,10 +80,11 @@ struct QueryRecord {
   bool solved = false;
   bool unsolvable = false;  // the graph, less its illegal edges, does not join them (no route left)
   int replans = 0;
+  int left_out = 0;         // route edges left out, undriven, as the trace does not join them (trace_legs)
   double length = 0.0;      // driven
   double shortest = 0.0;    // grid-shortest in the world at query time (+inf: not connected)
   double ratio = 0.0;       // length / shortest when solved, else 0
-  double plan_time_s = 0.0; // route planning, not driving (CPU of the A* calls)
+  double plan_time_s = 0.0; // route planning, not driving (the A* calls and the trace searches)
   std::size_t illegal_edges = 0;            // known after this query
   std::vector<Eigen::Vector2d> trace;       // driven positions
   std::vector<Eigen::Vector2d> blocks;      // where the robot stopped and replanned
@@ -151,6 +156,29 @@ class PgcsSession {
   Simulator simulator_;
   RandomWalk walk_;
   ReferenceGrid reference_;  // of the base world (coverage and quantisation error)
+  TraceCorridor trace_;      // where the robot has stood, on the reference grid's raster
+  std::vector<int> label_;   // per raster cell: the nearest cluster (-2: not yet asked), for label_step_
+  long label_step_ = -1;
+  std::vector<std::uint8_t> in_route_;  // by cluster id: on the route being driven
+  std::vector<int> route_labels_;       // the route's clusters, in order
+  std::vector<int> ring_;               // the corridor's clusters
+  // By cluster id: the clusters whose cells the trace joins to its cells side by side (sorted),
+  // for the clusters of links_step_ and the trace of links_version_.
+  std::vector<std::vector<int>> trace_links_;
+  long links_step_ = -1;
+  std::uint64_t links_version_ = 0;
+  void link_trace();
+  bool trace_linked(int a, int b) const;
+  // The cluster whose cell holds p, when it has a point to drive to (else -1).
+  int traced_home(const Eigen::Vector2d& p);
+  // The cluster whose cell holds raster cell `cell` (cached while the clusters stand still).
+  int cell_label(int cell);
+  // kDriven: legs_ follow the trace through the route's cells. kLeftOut: the trace does not join
+  // them, and the first route edge it does not join is left out of this query. kNone: neither.
+  enum class Traced { kDriven, kLeftOut, kNone };
+  Traced trace_route(const Route& route, const Eigen::Vector2d& from, const Eigen::Vector2d& target);
+  // legs_ along the trace from `from` to `target` through any visited cells (kDriven), or kNone.
+  Traced trace_anywhere(const Eigen::Vector2d& from, const Eigen::Vector2d& target);
   std::vector<std::uint8_t> base_reachable_;
   std::unique_ptr<ReferenceGrid> current_;   // of the world at the current step (queries, closed prior)
   std::size_t current_version_ = static_cast<std::size_t>(-1);
@@ -165,10 +193,10 @@ class PgcsSession {
   EdgeMemory blocked_now_{0.0};              // verified edges blocked in the query under way
   std::vector<Eigen::Vector2d> path_back_;
   struct Leg {
-    enum Kind { kNode, kPortal, kSkipped };
+    enum Kind { kNode, kPortal, kSkipped, kTrace };
     Eigen::Vector2d to;
     int from, to_node;  // the route edge this leg drives
-    Kind kind;          // to to_node's point, to the edge's portal, or a node cut across
+    Kind kind;          // to to_node's point, to the edge's portal, a node cut across, or along the trace
   };
   std::vector<Leg> legs_;
   std::vector<std::uint8_t> was_alive_;
