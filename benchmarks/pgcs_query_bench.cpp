@@ -3,7 +3,7 @@
 // 1,000 clusters), as a query runs it on every replan, without the driving. Target: one query with
 // its replans <= 1 ms.
 // BM_PgcsRoutePlan: one plan between random free points (with the portals' extra edges and
-// exemplars, as the session plans). BM_PgcsQueryPlanning: whole queries driven in the simulator,
+// exemplars, as the session plans), its graph's neighbours found afresh (/0) or kept (/1). BM_PgcsQueryPlanning: whole queries driven in the simulator,
 // reporting the planning time per query (counter plan_ms) and replans per query.
 #include <string>
 #include <vector>
@@ -28,6 +28,7 @@ amp::nav::PgcsSession& explored_office() {
   return *session;
 }
 
+// state.range(0): the plans share a graph_key (the neighbours found once are reused), or not.
 void BM_PgcsRoutePlan(benchmark::State& state) {
   amp::nav::PgcsSession& s = explored_office();
   const auto pairs = s.draw_queries(256);
@@ -42,29 +43,32 @@ void BM_PgcsRoutePlan(benchmark::State& state) {
           for (int j : s.portals().crossed(k)) {
             if (s.portal(k, j) != nullptr) out.push_back(j);
           }
-        });
+        },
+        nullptr, state.range(0) != 0 ? 1 : 0);
     expanded += r.expanded;
     benchmark::DoNotOptimize(r.cost);
   }
   state.counters["clusters"] = s.clusters().size();
   state.counters["expanded"] = benchmark::Counter(static_cast<double>(expanded), benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_PgcsRoutePlan)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PgcsRoutePlan)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_PgcsQueryPlanning(benchmark::State& state) {
   amp::nav::PgcsSession& s = explored_office();
   const auto pairs = s.draw_queries(64);
-  double plan = 0.0, replans = 0.0;
+  double plan = 0.0, replans = 0.0, left_out = 0.0;
   std::size_t n = 0;
   for (auto _ : state) {
     const auto& [a, b] = pairs[n++ % pairs.size()];
     const amp::nav::QueryRecord q = s.query(a, b);
     plan += q.plan_time_s;
     replans += q.replans;
+    left_out += q.left_out;
   }
   state.counters["clusters"] = s.clusters().size();
   state.counters["plan_ms"] = 1e3 * plan / static_cast<double>(n);
   state.counters["replans"] = replans / static_cast<double>(n);
+  state.counters["left_out"] = left_out / static_cast<double>(n);
 }
 BENCHMARK(BM_PgcsQueryPlanning)->Unit(benchmark::kMillisecond)->Iterations(64);
 

@@ -321,7 +321,7 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
                                           if (portal(k, j) != nullptr) out.push_back(j);
                                         }
                                       },
-                                      &blocked_now_);
+                                      &blocked_now_, tracing ? graph_key_ : 0);
     rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (tracing && ((route.empty() && left_out > 0) || left_out == kMaxLeftOut)) {
       // No route the trace supports (or none found in kMaxLeftOut tries): the rest of the query

@@ -75,27 +75,46 @@ double RoutePlanner::penalty(int w) {
 void RoutePlanner::add_arc(int v, int w, double factor) {
   const Eigen::Vector2d d = points_[w] - points_[v];
   const double length = d.norm();
-  arcs_.push_back({w, factor * length + penalty(w), length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan("")});
+  add_arc(w, length, length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan(""), factor);
+}
+
+void RoutePlanner::add_arc(int w, double length, double heading, double factor) {
+  arcs_.push_back({w, factor * length + penalty(w), heading});
+}
+
+void RoutePlanner::find_neighbours(const learn::Pgcs& clusters, int v, const std::function<bool(int, int)>& verified,
+                                   const std::function<void(int, std::vector<int>&)>& more_neighbours) {
+  nbr_begin_[v] = static_cast<int>(nbrs_.size());
+  clusters.triangulation().neighbours(ids_[v], neighbours_);
+  if (more_neighbours) more_neighbours(ids_[v], neighbours_);
+  for (int id : neighbours_) {
+    if (static_cast<std::size_t>(id) >= local_of_.size() || local_of_[static_cast<std::size_t>(id)] < 0) continue;
+    const int w = local_of_[static_cast<std::size_t>(id)];
+    if (!std::isfinite(points_[w].x())) continue;
+    if (std::any_of(nbrs_.begin() + nbr_begin_[v], nbrs_.end(), [&](const Neighbour& n) { return n.to == w; })) continue;
+    const Eigen::Vector2d d = points_[w] - points_[v];
+    const double length = d.norm();
+    const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
+    nbrs_.push_back({w, length, length > 0.0 ? std::atan2(d.y(), d.x()) : std::nan(""), known});
+  }
+  nbr_end_[v] = static_cast<int>(nbrs_.size());
 }
 
 void RoutePlanner::build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, const EdgeMemory* blocked_now, int v,
                               const std::function<bool(int, int)>& verified,
                               const std::function<void(int, std::vector<int>&)>& more_neighbours) {
+  if (nbr_begin_[v] < 0) find_neighbours(clusters, v, verified, more_neighbours);
   arcs_begin_[v] = static_cast<int>(arcs_.size());
-  clusters.triangulation().neighbours(ids_[v], neighbours_);
-  if (more_neighbours) more_neighbours(ids_[v], neighbours_);
   const double unverified = 1.0 + settings_.unverified_weight;
-  for (int id : neighbours_) {
-    if (static_cast<std::size_t>(id) >= local_of_.size() || local_of_[static_cast<std::size_t>(id)] < 0) continue;
-    const int w = local_of_[static_cast<std::size_t>(id)];
-    if (!std::isfinite(points_[w].x())) continue;
-    if (std::any_of(arcs_.begin() + arcs_begin_[v], arcs_.end(), [&](const Arc& a) { return a.to == w; })) continue;
-    const int blocks = memory.blocks(ids_[v], id, points_[v], points_[w]);
+  const bool remembered = !memory.empty(), now = blocked_now != nullptr && !blocked_now->empty();
+  for (int i = nbr_begin_[v]; i < nbr_end_[v]; ++i) {
+    const Neighbour& n = nbrs_[static_cast<std::size_t>(i)];
+    const int id = ids_[n.to];
+    const int blocks = remembered ? memory.blocks(ids_[v], id, points_[v], points_[n.to]) : 0;
     if (blocks >= memory.strikes()) continue;
-    if (blocked_now != nullptr && blocked_now->illegal(ids_[v], id, points_[v], points_[w])) continue;
-    const bool known = settings_.unverified_weight == 0.0 || !verified || verified(ids_[v], id);
+    if (now && blocked_now->illegal(ids_[v], id, points_[v], points_[n.to])) continue;
     // A suspect (blocked before, not yet illegal) is a last resort.
-    add_arc(v, w, (known ? 1.0 : unverified) * (blocks > 0 ? 1.0 + settings_.suspect_weight : 1.0));
+    add_arc(n.to, n.length, n.heading, (n.known ? 1.0 : unverified) * (blocks > 0 ? 1.0 + settings_.suspect_weight : 1.0));
   }
   if (links_target_[v] != 0) add_arc(v, static_cast<int>(points_.size()) - 1, 1.0);
   arcs_end_[v] = static_cast<int>(arcs_.size());
@@ -106,29 +125,36 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
                          double failed_tolerance, const std::function<bool(int, int)>& verified,
                          const std::function<Eigen::Vector2d(int)>& where, int back,
                          const std::function<void(int, std::vector<int>&)>& more_neighbours,
-                         const EdgeMemory* blocked_now) {
+                         const EdgeMemory* blocked_now, std::uint64_t graph_key) {
   Route route;
   const std::vector<int>& alive = clusters.ids();
   const int k = static_cast<int>(alive.size());
   const int s = k, t = k + 1, n = k + 2;
-  ids_.assign(alive.begin(), alive.end());
-  const int max_id = alive.empty() ? 0 : alive.back();
-  local_of_.assign(static_cast<std::size_t>(max_id) + 1, -1);
-  points_.resize(static_cast<std::size_t>(n));
-  double prior_sum = 0.0;
-  for (int i = 0; i < k; ++i) {
-    local_of_[static_cast<std::size_t>(ids_[i])] = i;
-    points_[i] = where ? where(ids_[i]) : clusters.mean(ids_[i]);
-    prior_sum += clusters.prior(ids_[i]);
+  if (graph_key == 0 || graph_key != key_ || ids_.size() != alive.size()) {
+    // A new graph: its clusters' local indices, points, prior penalties and neighbours afresh.
+    key_ = graph_key;
+    ids_.assign(alive.begin(), alive.end());
+    const int max_id = alive.empty() ? 0 : alive.back();
+    local_of_.assign(static_cast<std::size_t>(max_id) + 1, -1);
+    points_.resize(static_cast<std::size_t>(n));
+    double prior_sum = 0.0;
+    for (int i = 0; i < k; ++i) {
+      local_of_[static_cast<std::size_t>(ids_[i])] = i;
+      points_[i] = where ? where(ids_[i]) : clusters.mean(ids_[i]);
+      prior_sum += clusters.prior(ids_[i]);
+    }
+    // Prior penalties are taken when a node is first reached (a log per cluster per plan cost more
+    // than the search); the start and the target have none.
+    log_mean_prior_ = k > 0 && prior_sum > 0.0 ? std::log(prior_sum / k) : 0.0;
+    penalty_.assign(static_cast<std::size_t>(n), std::nan(""));
+    penalty_[static_cast<std::size_t>(s)] = penalty_[static_cast<std::size_t>(t)] = 0.0;
+    nbr_begin_.assign(static_cast<std::size_t>(k), -1);
+    nbr_end_.assign(static_cast<std::size_t>(k), -1);
+    nbrs_.clear();
   }
+  clusters_ = &clusters;
   points_[s] = start;
   points_[t] = target;
-  // Prior penalties are taken when a node is first reached (a log per cluster per plan cost more
-  // than the search); the start and the target have none.
-  clusters_ = &clusters;
-  log_mean_prior_ = k > 0 && prior_sum > 0.0 ? std::log(prior_sum / k) : 0.0;
-  penalty_.assign(static_cast<std::size_t>(n), std::nan(""));
-  penalty_[static_cast<std::size_t>(s)] = penalty_[static_cast<std::size_t>(t)] = 0.0;
   nearest_centres(clusters, start, failed, failed_tolerance, start_links_);
   nearest_centres(clusters, target, failed, failed_tolerance, target_links_);
   // Straight from start to target only when the target is nearer than every centre the start joins.
@@ -164,6 +190,10 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   heap_.clear();
   const std::greater<std::pair<double, int>> later;
   h_.assign(static_cast<std::size_t>(n), -1.0);
+  // Arrivals dominated by an expanded one at the same node are not searched on: a turn costs at
+  // most turn_weight * pi, so from an arrival that much cheaper every way on is at least as cheap.
+  best_in_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  const double max_turn = settings_.turn_weight * std::numbers::pi;
   auto h = [&](int v) {  // the straight distance to the target, once per node
     double& d = h_[static_cast<std::size_t>(v)];
     if (d < 0.0) d = (points_[v] - target).norm();
@@ -171,6 +201,7 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   };
   auto relax = [&](int from_arc, int a, double c) {
     if (c >= g_[static_cast<std::size_t>(a)]) return;
+    if (best_in_[static_cast<std::size_t>(arcs_[static_cast<std::size_t>(a)].to)] + max_turn < c) return;
     g_[static_cast<std::size_t>(a)] = c;
     parent_[static_cast<std::size_t>(a)] = from_arc;
     heap_.emplace_back(c + h(arcs_[static_cast<std::size_t>(a)].to), a);
@@ -191,8 +222,11 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
     const auto ua = static_cast<std::size_t>(a);
     if (closed_[ua] != 0) continue;
     closed_[ua] = 1;
-    ++route.expanded;
     const int v = arcs_[ua].to;
+    double& best = best_in_[static_cast<std::size_t>(v)];
+    if (best + max_turn < g_[ua]) continue;
+    best = std::min(best, g_[ua]);
+    ++route.expanded;
     if (v == t) {
       goal_arc = a;
       break;

@@ -33,6 +33,7 @@ class EdgeMemory {
     return blocks(a, b, pa, pb) >= strikes_;
   }
   int strikes() const { return strikes_; }
+  bool empty() const { return edges_.empty(); }
   std::size_t size() const;             // illegal edges
   std::size_t suspects() const;         // edges blocked, not yet illegal
   std::vector<Entry> entries() const;   // every edge blocked, illegal or suspect, ordered by (a, b)

@@ -167,6 +167,9 @@ class PgcsSession {
   std::vector<std::vector<int>> trace_links_;
   long links_step_ = -1;
   std::uint64_t links_version_ = 0;
+  // RoutePlanner's graph_key for tracing plans: changes whenever trace_links_ are made afresh (the
+  // clusters, their points and the links hold until then).
+  std::uint64_t graph_key_ = 0;
   void link_trace();
   bool trace_linked(int a, int b) const;
   // The cluster whose cell holds p, when it has a point to drive to (else -1).

@@ -68,12 +68,16 @@ class RoutePlanner {
   // `where(k)`: the point that stands for cluster k (empty: its centre); NaN leaves k out.
   // `more_neighbours(k, out)` appends edges beyond the Delaunay ones (clusters the robot crossed to).
   // `blocked_now`: edges left out of this plan only, besides the remembered illegal ones.
+  // `graph_key`: a non-zero key equal to the previous plan's promises the same clusters, `where`,
+  // `verified` and `more_neighbours`, so the nodes' neighbours, lengths, headings and prior
+  // penalties found then are reused (the memory, blocked_now, failed attachments, back, start and
+  // target are always taken afresh). 0: nothing is reused.
   Route plan(const learn::Pgcs& clusters, const EdgeMemory& memory, const Eigen::Vector2d& start,
              const Eigen::Vector2d& target, std::span<const FailedAttachment> failed, double failed_tolerance,
              const std::function<bool(int, int)>& verified = {},
              const std::function<Eigen::Vector2d(int)>& where = {}, int back = -1,
              const std::function<void(int, std::vector<int>&)>& more_neighbours = {},
-             const EdgeMemory* blocked_now = nullptr);
+             const EdgeMemory* blocked_now = nullptr, std::uint64_t graph_key = 0);
 
  private:
   // The `attach` nearest triangulated centres to p, without failed ones, into out (local indices).
@@ -86,14 +90,28 @@ class RoutePlanner {
     double cost = 0.0;        // length * (verified ? 1 : 1 + unverified_weight) + penalty of `to`
     double heading = 0.0;     // direction (radians; NaN for a null arc), for the turning angle at `to`
   };
+  // A graph edge v -> w as the key's plans share it: what does not change while the key holds.
+  struct Neighbour {
+    int to = 0;             // local index
+    double length = 0.0;
+    double heading = 0.0;   // radians; NaN for a null edge
+    bool known = true;      // verified, or no unverified weight
+  };
+  // v's neighbours (Delaunay and more_neighbours, once each), found once per key.
+  void find_neighbours(const learn::Pgcs& clusters, int v, const std::function<bool(int, int)>& verified,
+                       const std::function<void(int, std::vector<int>&)>& more_neighbours);
   // Appends v's arcs to arcs_ once per plan (illegal edges left out); the search states are arcs.
   void build_arcs(const learn::Pgcs& clusters, const EdgeMemory& memory, const EdgeMemory* blocked_now, int v,
                   const std::function<bool(int, int)>& verified,
                   const std::function<void(int, std::vector<int>&)>& more_neighbours);
   void add_arc(int v, int w, double factor);
+  void add_arc(int w, double length, double heading, double factor);
   double penalty(int w);  // the prior penalty of entering local node w, computed once per plan
 
   RouteSettings settings_;
+  std::uint64_t key_ = 0;                    // the graph_key the cached neighbours belong to
+  std::vector<int> nbr_begin_, nbr_end_;     // local index -> its neighbours in nbrs_ (begin -1: not found)
+  std::vector<Neighbour> nbrs_;
   // Buffers reused across plans (no allocation once grown).
   std::vector<int> local_of_;                // cluster id -> local index
   std::vector<int> ids_;                     // local index -> cluster id
@@ -108,6 +126,7 @@ class RoutePlanner {
   std::vector<double> g_;                    // arc -> best cost of arriving over it
   std::vector<int> parent_;                  // arc -> the arc before it (-1: from the start)
   std::vector<std::uint8_t> closed_;         // arc -> expanded
+  std::vector<double> best_in_;              // local index -> cheapest expanded arrival
   std::vector<std::pair<double, int>> heap_;
   std::vector<int> start_links_, target_links_, neighbours_, scratch_;
   std::vector<std::pair<double, int>> by_distance_;
