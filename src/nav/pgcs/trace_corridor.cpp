@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "amp/world/polygon_geometry.hpp"
+
 namespace amp::nav {
 
 namespace {
@@ -21,13 +23,6 @@ constexpr std::size_t kMaxStretch = 64;
 constexpr double kClearBand = 0.5;
 
 constexpr std::uint8_t kKnown = 1, kPassable = 2, kClosed = 4, kReached = 8, kWaiting = 16;
-
-double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0.0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
 
 }  // namespace
 
@@ -106,7 +101,7 @@ bool TraceCorridor::clear(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
   const int y0 = std::max(0, static_cast<int>(std::floor(lo.y()))), y1 = std::min(geometry_.height() - 1, static_cast<int>(hi.y()));
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
-      if (segment_distance(geometry_.cell_center(x, y), a, b) <= kClearBand * cs && !passable(geometry_.index(x, y))) {
+      if (std::sqrt(world::point_segment_distance_sq(geometry_.cell_center(x, y), a, b)) <= kClearBand * cs && !passable(geometry_.index(x, y))) {
         return false;
       }
     }

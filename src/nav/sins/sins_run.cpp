@@ -14,6 +14,7 @@
 #include "amp/nav/simulator.hpp"
 #include "amp/nav/sins/environment_trends.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
+#include "amp/world/polygon_geometry.hpp"
 
 namespace amp::nav {
 
@@ -94,14 +95,6 @@ std::vector<Estimators> cumulative_estimates(const std::vector<WorldOutcome>& wo
 
 namespace {
 
-// Distance from p to the segment a-b.
-double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 }  // namespace
 
 WorldOutcome run_world(const ClutterWorld& world, int index, ParameterPolicy& policy, const SinsSettings& settings,
@@ -160,7 +153,7 @@ WorldOutcome run_world(const ClutterWorld& world, int index, ParameterPolicy& po
       trace->positions.push_back(to);
       trace->parameters.push_back(params);
     }
-    arrived = segment_distance(world.goal, from, to) <= settings.goal_tolerance;
+    arrived = std::sqrt(world::point_segment_distance_sq(world.goal, from, to)) <= settings.goal_tolerance;
     if (!arrived && out.steps % settings.control_interval == 0) params = policy.end_interval(trends.close_interval(), rng);
   }
   out.solved = arrived;
