@@ -79,6 +79,6 @@ void BM_PgcsQueryPlanning(benchmark::State& state) {
   state.counters["replans"] = replans / static_cast<double>(n);
   state.counters["left_out"] = left_out / static_cast<double>(n);
 }
-BENCHMARK(BM_PgcsQueryPlanning)->Arg(1000)->Arg(200)->Unit(benchmark::kMillisecond)->Iterations(64);
+BENCHMARK(BM_PgcsQueryPlanning)->Arg(1000)->Arg(500)->Arg(200)->Unit(benchmark::kMillisecond)->Iterations(64);
 
 }  // namespace

@@ -8,10 +8,14 @@ void EdgeMemory::mark(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vect
   if (a > b) return mark(b, a, pb, pa);
   const int before = blocks(a, b, pa, pb);
   edges_[{a, b}] = {pa, pb, before + 1};
+  if (b >= 0 && static_cast<std::size_t>(b) >= touched_.size()) touched_.resize(static_cast<std::size_t>(b) + 1, 0);
+  for (const int id : {a, b}) {
+    if (id >= 0) touched_[static_cast<std::size_t>(id)] = 1;
+  }
 }
 
-int EdgeMemory::blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
-  if (a > b) return blocks(b, a, pb, pa);
+int EdgeMemory::recorded_blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
+  if (a > b) return recorded_blocks(b, a, pb, pa);
   const auto it = edges_.find({a, b});
   if (it == edges_.end()) return 0;
   const bool same = (it->second.pa - pa).squaredNorm() <= tolerance2_ && (it->second.pb - pb).squaredNorm() <= tolerance2_;

@@ -291,6 +291,7 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
   blocked_now_.clear();
   bool tracing = run_.trace_legs, anywhere = false;
   if (tracing) link_trace();
+  std::uint64_t portal_key = ++graph_key_;  // the portal graph's (verified and more edges: the portals)
   int left_out = 0;  // route edges left out as not known (trace_route)
   int back = -1;  // the cluster the robot last drove from
   const StraightLegSettings leg{run_.block_distance * r, 20, 3.0, run_.detour * r};
@@ -321,7 +322,7 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
                                           if (portal(k, j) != nullptr) out.push_back(j);
                                         }
                                       },
-                                      &blocked_now_, tracing ? graph_key_ : 0);
+                                      &blocked_now_, tracing ? trace_key_ : portal_key);
     rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (tracing && ((route.empty() && left_out > 0) || left_out == kMaxLeftOut)) {
       // No route the trace supports (or none found in kMaxLeftOut tries): the rest of the query
@@ -417,6 +418,7 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
         // portal and is left out of this query; as a plain edge it may be tried again later.
         if (portal(u, v) != nullptr) {
           portals_.drop(u, v);
+          portal_key = ++graph_key_;
           blocked_now_.mark(u, v, node_point(u), node_point(v));
         } else {
           memory_.mark(u, v, node_point(u), node_point(v));

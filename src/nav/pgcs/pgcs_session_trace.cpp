@@ -49,7 +49,7 @@ void PgcsSession::link_trace() {
   }
   links_step_ = pgcs_.steps();
   links_version_ = trace_.version();
-  ++graph_key_;
+  trace_key_ = ++graph_key_;
 }
 
 int PgcsSession::traced_home(const Eigen::Vector2d& p) {

@@ -187,13 +187,26 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   g_.clear();
   parent_.clear();
   closed_.clear();
+  in_next_.clear();
   heap_.clear();
-  const std::greater<std::pair<double, int>> later;
   h_.assign(static_cast<std::size_t>(n), -1.0);
-  // Arrivals dominated by an expanded one at the same node are not searched on: a turn costs at
-  // most turn_weight * pi, so from an arrival that much cheaper every way on is at least as cheap.
+  // Arrivals dominated by an expanded one at the same node are not searched on. Arriving with
+  // heading x instead of y changes any next turn by at most angle(x, y) (a triangle inequality on
+  // the circle; pi when either is a null arc's), so an arrival b with g(b) + turn_weight *
+  // angle(a, b) < g(a) makes every way on from a dearer than the same way from b. best_in_ (the
+  // cheapest expanded arrival, with the largest angle, pi) settles most cases before the list.
   best_in_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  in_head_.assign(static_cast<std::size_t>(n), -1);
   const double max_turn = settings_.turn_weight * std::numbers::pi;
+  auto dominated = [&](int v, double heading, double c) {
+    if (best_in_[static_cast<std::size_t>(v)] + max_turn < c) return true;
+    for (int b = in_head_[static_cast<std::size_t>(v)]; b >= 0; b = in_next_[static_cast<std::size_t>(b)]) {
+      const double other = arcs_[static_cast<std::size_t>(b)].heading;
+      const double angle = std::isnan(heading) || std::isnan(other) ? std::numbers::pi : turn_angle(heading, other);
+      if (g_[static_cast<std::size_t>(b)] + settings_.turn_weight * angle < c) return true;
+    }
+    return false;
+  };
   auto h = [&](int v) {  // the straight distance to the target, once per node
     double& d = h_[static_cast<std::size_t>(v)];
     if (d < 0.0) d = (points_[v] - target).norm();
@@ -201,31 +214,32 @@ Route RoutePlanner::plan(const learn::Pgcs& clusters, const EdgeMemory& memory, 
   };
   auto relax = [&](int from_arc, int a, double c) {
     if (c >= g_[static_cast<std::size_t>(a)]) return;
-    if (best_in_[static_cast<std::size_t>(arcs_[static_cast<std::size_t>(a)].to)] + max_turn < c) return;
+    if (dominated(arcs_[static_cast<std::size_t>(a)].to, arcs_[static_cast<std::size_t>(a)].heading, c)) return;
     g_[static_cast<std::size_t>(a)] = c;
     parent_[static_cast<std::size_t>(a)] = from_arc;
-    heap_.emplace_back(c + h(arcs_[static_cast<std::size_t>(a)].to), a);
-    std::push_heap(heap_.begin(), heap_.end(), later);
+    heap_.push({c + h(arcs_[static_cast<std::size_t>(a)].to), a});
   };
   auto grow = [&] {  // per-arc state for arcs built since the last call
     g_.resize(arcs_.size(), std::numeric_limits<double>::infinity());
     parent_.resize(arcs_.size(), -1);
     closed_.resize(arcs_.size(), 0);
+    in_next_.resize(arcs_.size(), -1);
   };
   grow();
   for (int a = arcs_begin_[s]; a < arcs_end_[s]; ++a) relax(-1, a, arcs_[static_cast<std::size_t>(a)].cost);
   int goal_arc = -1;
   while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), later);
-    const int a = heap_.back().second;
-    heap_.pop_back();
+    const int a = heap_.top().second;
+    heap_.pop();
     const auto ua = static_cast<std::size_t>(a);
     if (closed_[ua] != 0) continue;
     closed_[ua] = 1;
     const int v = arcs_[ua].to;
+    if (dominated(v, arcs_[ua].heading, g_[ua])) continue;
     double& best = best_in_[static_cast<std::size_t>(v)];
-    if (best + max_turn < g_[ua]) continue;
     best = std::min(best, g_[ua]);
+    in_next_[ua] = in_head_[static_cast<std::size_t>(v)];
+    in_head_[static_cast<std::size_t>(v)] = a;
     ++route.expanded;
     if (v == t) {
       goal_arc = a;

@@ -46,5 +46,20 @@ TEST(EdgeMemory, AnEdgeWhoseEndsMovedStartsAfresh) {
   EXPECT_EQ(m.blocks(1, 2, V(0, 0), V(1.5, 0)), 0);
 }
 
+TEST(EdgeMemory, EdgesOfUnmarkedClustersAndBeyondTheLargestIdAreFree) {
+  EdgeMemory m(0.1);
+  m.mark(3, 7, V(0, 0), V(1, 0));
+  m.mark(-1, 5, V(2, 0), V(3, 0));  // a negative id (a route's start) is kept too
+  EXPECT_TRUE(m.illegal(7, 3, V(1, 0), V(0, 0)));
+  EXPECT_TRUE(m.illegal(5, -1, V(3, 0), V(2, 0)));
+  EXPECT_EQ(m.blocks(3, 5, V(0, 0), V(3, 0)), 0);     // both ids marked, not this edge
+  EXPECT_EQ(m.blocks(3, 4, V(0, 0), V(1, 0)), 0);     // 4 never marked
+  EXPECT_EQ(m.blocks(3, 1000, V(0, 0), V(1, 0)), 0);  // beyond every id marked
+  m.clear();
+  EXPECT_EQ(m.blocks(3, 7, V(0, 0), V(1, 0)), 0);
+  m.mark(7, 3, V(1, 0), V(0, 0));
+  EXPECT_TRUE(m.illegal(3, 7, V(0, 0), V(1, 0)));
+}
+
 }  // namespace
 }  // namespace amp::nav

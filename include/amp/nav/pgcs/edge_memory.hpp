@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
@@ -28,7 +29,9 @@ class EdgeMemory {
   // One more block of the edge between a at pa and b at pb (the first, if its ends moved).
   void mark(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb);
   // Blocks on record for the edge as it stands (0: none).
-  int blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const;
+  int blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
+    return touches(a) && touches(b) ? recorded_blocks(a, b, pa, pb) : 0;
+  }
   bool illegal(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const {
     return blocks(a, b, pa, pb) >= strikes_;
   }
@@ -37,7 +40,10 @@ class EdgeMemory {
   std::size_t size() const;             // illegal edges
   std::size_t suspects() const;         // edges blocked, not yet illegal
   std::vector<Entry> entries() const;   // every edge blocked, illegal or suspect, ordered by (a, b)
-  void clear() { edges_.clear(); }
+  void clear() {
+    edges_.clear();
+    touched_.clear();
+  }
 
  private:
   struct Record {
@@ -47,6 +53,13 @@ class EdgeMemory {
   double tolerance2_;
   int strikes_;
   std::map<std::pair<int, int>, Record> edges_;
+  // Cluster id -> an edge of it is on record: most lookups (a planner asks for every edge it
+  // relaxes) are answered without the map.
+  std::vector<std::uint8_t> touched_;
+  int recorded_blocks(int a, int b, const Eigen::Vector2d& pa, const Eigen::Vector2d& pb) const;
+  bool touches(int id) const {
+    return id < 0 || (static_cast<std::size_t>(id) < touched_.size() && touched_[static_cast<std::size_t>(id)] != 0);
+  }
 };
 
 }  // namespace amp::nav

@@ -167,9 +167,11 @@ class PgcsSession {
   std::vector<std::vector<int>> trace_links_;
   long links_step_ = -1;
   std::uint64_t links_version_ = 0;
-  // RoutePlanner's graph_key for tracing plans: changes whenever trace_links_ are made afresh (the
-  // clusters, their points and the links hold until then).
-  std::uint64_t graph_key_ = 0;
+  // RoutePlanner's graph_keys, drawn from one counter so that no two graphs share one. trace_key_:
+  // the tracing plans' graph, new whenever trace_links_ are made afresh (the clusters, their points
+  // and the links hold until then). The portal graph's key (a query's own) is new at each query and
+  // whenever a portal is dropped.
+  std::uint64_t graph_key_ = 0, trace_key_ = 0;
   void link_trace();
   bool trace_linked(int a, int b) const;
   // The cluster whose cell holds p, when it has a point to drive to (else -1).

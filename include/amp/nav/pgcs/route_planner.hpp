@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <boost/heap/d_ary_heap.hpp>
 
 #include "amp/nav/pgcs/edge_memory.hpp"
 
@@ -51,9 +52,12 @@ struct Route {
 // so smooth routes through often-visited clusters win. The turn term makes the cost depend on the
 // previous node: the search runs on directed edges (u, v). The heuristic |v - target| is
 // admissible and consistent (every other term is >= 0), so the first expansion of the target is
-// optimal. Edges the EdgeMemory holds illegal and the failed attachments are left out. Beyond the paper,
-// edges the robot has not been seen crossing may cost more (unverified_weight), so that routes
-// keep to the ways the robot actually went (through doors, not through the walls beside them).
+// optimal. An arrival at a node is not searched on when one already expanded there costs less by
+// more than turn_weight times the angle between their headings (no next turn can make up for it),
+// which keeps the search exact with far fewer states. Edges the EdgeMemory holds illegal and the
+// failed attachments are left out. Beyond the paper, edges the robot has not been seen crossing may
+// cost more (unverified_weight), so that routes keep to the ways the robot actually went (through
+// doors, not through the walls beside them).
 class RoutePlanner {
  public:
   // Throws ParameterError for negative weights or attach < 1.
@@ -127,7 +131,11 @@ class RoutePlanner {
   std::vector<int> parent_;                  // arc -> the arc before it (-1: from the start)
   std::vector<std::uint8_t> closed_;         // arc -> expanded
   std::vector<double> best_in_;              // local index -> cheapest expanded arrival
-  std::vector<std::pair<double, int>> heap_;
+  std::vector<int> in_head_, in_next_;       // local index -> its expanded arrivals, listed through arcs
+  // (f, arc), least first; 4-ary: fewer levels than a binary heap for the same pops.
+  boost::heap::d_ary_heap<std::pair<double, int>, boost::heap::arity<4>,
+                          boost::heap::compare<std::greater<std::pair<double, int>>>>
+      heap_;
   std::vector<int> start_links_, target_links_, neighbours_, scratch_;
   std::vector<std::pair<double, int>> by_distance_;
 };
