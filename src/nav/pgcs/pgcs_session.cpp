@@ -290,68 +290,83 @@ QueryRecord PgcsSession::query(const Eigen::Vector2d& start, const Eigen::Vector
   failed_.clear();
   blocked_now_.clear();
   bool tracing = run_.trace_legs, anywhere = false;
+  const auto t_links = std::chrono::steady_clock::now();
   if (tracing) link_trace();
+  rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t_links).count();
   std::uint64_t portal_key = ++graph_key_;  // the portal graph's (verified and more edges: the portals)
   int left_out = 0;  // route edges left out as not known (trace_route)
   int back = -1;  // the cluster the robot last drove from
   const StraightLegSettings leg{run_.block_distance * r, 20, 3.0, run_.detour * r};
   const double speed = run_.speed * r;
+  // No route the trace supports (none at all, or none found in kMaxLeftOut tries): the rest of the
+  // query follows the trace wherever it leads, when it joins the robot to the target at all, and
+  // otherwise goes by trial and error on the graph as it is (what was left out was only not known,
+  // not seen blocked).
+  const auto to_anywhere = [&] {
+    tracing = false;
+    anywhere = true;
+    failed_.clear();
+    blocked_now_.clear();
+  };
   for (;;) {
     const Eigen::Vector2d from = simulator_.state().position;
-    const auto t0 = std::chrono::steady_clock::now();
-    // Tracing, an edge is verified when the trace joins its two cells side by side, and such pairs
-    // are edges even when their centres are no longer Delaunay neighbours; else by the portals.
-    const Route route = planner_.plan(pgcs_, memory_, from, target, failed_, r,
-                                      [this, tracing](int a, int b) {
-                                        return tracing ? trace_linked(a, b) : portal(a, b) != nullptr;
-                                      },
-                                      [this](int k) { return node_point(k); },
-                                      // Tracing, the start also joins the cluster whose cell it stands in, by the
-                                      // trace (its nearest centres' cells may lie beyond a wall).
-                                      tracing && back < 0 ? traced_home(from) : back,
-                                      [this, tracing](int k, std::vector<int>& out) {
-                                        if (tracing) {
-                                          if (static_cast<std::size_t>(k) < trace_links_.size()) {
-                                            out.insert(out.end(), trace_links_[static_cast<std::size_t>(k)].begin(),
-                                                       trace_links_[static_cast<std::size_t>(k)].end());
-                                          }
-                                          return;
-                                        }
-                                        if (!run_.portals) return;
-                                        for (int j : portals_.crossed(k)) {
-                                          if (portal(k, j) != nullptr) out.push_back(j);
-                                        }
-                                      },
-                                      &blocked_now_, tracing ? trace_key_ : portal_key);
-    rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (tracing && ((route.empty() && left_out > 0) || left_out == kMaxLeftOut)) {
-      // No route the trace supports (or none found in kMaxLeftOut tries): the rest of the query
-      // follows the trace wherever it leads, when it joins the robot to the target at all, and
-      // otherwise goes by trial and error on the graph as it is (what was left out was only not
-      // known, not seen blocked).
-      tracing = false;
-      anywhere = true;
-      failed_.clear();
-      blocked_now_.clear();
-      continue;
-    }
-    if (route.empty()) {
-      rec.unsolvable = true;
-      break;
-    }
+    if (tracing && left_out == kMaxLeftOut) to_anywhere();
     // Waypoints: along the trace through the route's cells when it joins them; else each node,
     // preceded by its edge's portal when one is known. A node between two portals is skipped (the
     // robot cuts across its cell from portal to portal) when `shortcuts` is on; if that cut is
     // blocked, the robot goes on through the node's point instead.
     legs_.clear();
-    const auto t1 = std::chrono::steady_clock::now();
-    Traced traced = tracing ? trace_route(route, from, target) : Traced::kNone;
-    if ((tracing || anywhere) && traced == Traced::kNone) traced = trace_anywhere(from, target);
-    rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    if (traced == Traced::kLeftOut) {
-      ++left_out;
-      if (stop != nullptr && stop->time_up()) break;
-      continue;
+    Traced traced = Traced::kNone;
+    Route route;
+    if (anywhere) {  // the trace first: a route is only needed where it does not lead
+      const auto t1 = std::chrono::steady_clock::now();
+      traced = trace_anywhere(from, target);
+      rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    }
+    if (traced == Traced::kNone) {
+      const auto t0 = std::chrono::steady_clock::now();
+      // Tracing, an edge is verified when the trace joins its two cells side by side, and such
+      // pairs are edges even when their centres are no longer Delaunay neighbours; else by the portals.
+      route = planner_.plan(pgcs_, memory_, from, target, failed_, r,
+                            [this, tracing](int a, int b) {
+                              return tracing ? trace_linked(a, b) : portal(a, b) != nullptr;
+                            },
+                            [this](int k) { return node_point(k); },
+                            // Tracing, the start also joins the cluster whose cell it stands in, by the
+                            // trace (its nearest centres' cells may lie beyond a wall).
+                            tracing && back < 0 ? traced_home(from) : back,
+                            [this, tracing](int k, std::vector<int>& out) {
+                              if (tracing) {
+                                if (static_cast<std::size_t>(k) < trace_links_.size()) {
+                                  out.insert(out.end(), trace_links_[static_cast<std::size_t>(k)].begin(),
+                                             trace_links_[static_cast<std::size_t>(k)].end());
+                                }
+                                return;
+                              }
+                              if (!run_.portals) return;
+                              for (int j : portals_.crossed(k)) {
+                                if (portal(k, j) != nullptr) out.push_back(j);
+                              }
+                            },
+                            &blocked_now_, tracing ? trace_key_ : portal_key);
+      rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (tracing && route.empty() && left_out > 0) {
+        to_anywhere();
+        continue;
+      }
+      if (route.empty()) {
+        rec.unsolvable = true;
+        break;
+      }
+      const auto t1 = std::chrono::steady_clock::now();
+      if (tracing) traced = trace_route(route, from, target);
+      if (tracing && traced == Traced::kNone) traced = trace_anywhere(from, target);
+      rec.plan_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      if (traced == Traced::kLeftOut) {
+        ++left_out;
+        if (stop != nullptr && stop->time_up()) break;
+        continue;
+      }
     }
     for (std::size_t i = 1; traced == Traced::kNone && i < route.points.size(); ++i) {
       const int u = route.nodes[i - 1], v = route.nodes[i];
