@@ -18,6 +18,7 @@
 #include "amp/nav/navigator_catalog.hpp"
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
+#include "amp/world/arm_problem.hpp"
 #include "amp/world/problem.hpp"
 
 namespace py = pybind11;
@@ -64,8 +65,7 @@ py::tuple plan(const amp::world::Problem& problem, const std::string& planner, s
   {
     py::gil_scoped_release free;  // a run may take seconds: let other Python threads go on
     run = amp::roadmap::execute_run(problem, planner.empty() ? problem.defaults.planner : planner, p, seed,
-                                    time_limit.value_or(problem.defaults.time_limit_s),
-                                    node_limit.value_or(problem.defaults.node_limit));
+                                    time_limit.value_or(problem.defaults.time_limit_s), node_limit);
   }
   std::vector<std::vector<double>> path;
   for (const amp::State& s : run.path) path.push_back(as_vector(s));
@@ -129,6 +129,16 @@ PYBIND11_MODULE(amp, m) {
 
   m.def("load_problem", [](const std::string& path) { return amp::world::load_problem(path); }, py::arg("path"),
         "Loads a problem file (YAML or OMPL.app .cfg); raises amp.Error naming the file and field");
+  m.def(
+      "load_arm_problem",
+      [](const std::string& urdf, const std::string& srdf, const std::string& scene, const std::string& request,
+         const std::vector<std::string>& package_paths) {
+        amp::world::ArmFiles files{urdf, srdf, scene, request, {}};
+        for (const std::string& p : package_paths) files.package_paths.emplace_back(p);
+        return amp::world::load_arm_problem(files);
+      },
+      py::arg("urdf"), py::arg("srdf"), py::arg("scene"), py::arg("request"), py::arg("package_paths") = std::vector<std::string>{},
+      "Loads an arm problem from a MoveIt user's files (as amp plan --urdf --srdf --scene --request)");
   m.def("plan", &plan, py::arg("problem"), py::arg("planner") = "prm", py::arg("seed") = 1,
         py::arg("params") = py::dict(), py::arg("time_limit") = py::none(), py::arg("node_limit") = py::none(),
         "Runs a planner once: (record as a dict, path as an array of states; empty when unsolved)");

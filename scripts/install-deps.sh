@@ -19,6 +19,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
+  liburdfdom-dev liborocos-kdl-dev libtinyxml2-dev
 )
 if [ "$with_test" -eq 1 ]; then
   packages+=(libompl-dev python3-pytest)

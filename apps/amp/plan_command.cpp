@@ -1,6 +1,7 @@
 // `amp plan`: one planner run on one problem; prints the run record, writes the path.
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +21,7 @@ namespace {
 struct PlanOptions {
   std::string problem;
   MapQuery map;                  // with a map_server YAML as the problem
+  ArmInput arm;                  // an arm from a MoveIt user's files, instead of a problem file
   const CLI::App* cmd = nullptr;  // to tell which options were given
   std::string planner;
   std::vector<std::string> params;
@@ -45,14 +47,19 @@ int run_plan(const PlanOptions& o) {
   if (!o.out.empty() && !o.svg.empty() && resolved(o.out) == resolved(o.svg)) {
     throw Error("--svg: '" + o.svg + "' is the --out file too; the picture would replace the path");
   }
-  world::Problem problem = load_problem_input(o.problem, o.map, true, *o.cmd);
+  if (o.problem.empty() && !o.arm.given()) throw Error("PROBLEM: give a problem file, or --urdf, --srdf, --scene and --request");
+  world::Problem problem =
+      o.arm.given() ? load_arm_input(o.arm, o.problem) : load_problem_input(o.problem, o.map, true, *o.cmd);
   if (!o.edge_check.empty()) problem.defaults.edge_check = core::parse_edge_check_mode(o.edge_check);
   const std::string planner = resolve_planner(o.planner, problem);
   const double time_limit = o.time_limit > 0.0 ? o.time_limit : problem.defaults.time_limit_s;
-  const std::size_t node_limit = o.node_limit > 0 ? static_cast<std::size_t>(o.node_limit) : problem.defaults.node_limit;
+  const std::optional<std::size_t> given =
+      o.node_limit > 0 ? std::optional<std::size_t>(static_cast<std::size_t>(o.node_limit)) : std::nullopt;
+  const std::size_t node_limit =
+      roadmap::resolve_node_limit(given, problem, roadmap::builtin_planners().info(planner));
 
   const roadmap::RunOutcome run =
-      roadmap::execute_run(problem, planner, parse_params(o.params), o.seed, time_limit, node_limit);
+      roadmap::execute_run(problem, planner, parse_params(o.params), o.seed, time_limit, given);
 
   if (o.json) {
     std::cout << bench::to_json(run.record).dump(2) << '\n';
@@ -93,7 +100,9 @@ int run_plan(const PlanOptions& o) {
 void add_plan_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<PlanOptions>();
   CLI::App* cmd = app.add_subcommand("plan", "Solve one problem with one planner; print the run record");
-  cmd->add_option("problem", o->problem, "Problem file (.yaml or OMPL.app .cfg), or a ROS map_server YAML with --start and --goal")->required();
+  cmd->add_option("problem", o->problem,
+                  "Problem file (.yaml or OMPL.app .cfg), or a ROS map_server YAML with --start and --goal (or, "
+                  "for an arm, none: --urdf, --srdf, --scene, --request)");
   cmd->add_option("--planner", o->planner, "Planner name (default: the problem's, else prm)");
   cmd->add_option("--param", o->params, "Planner parameter name=value (repeatable), e.g. --param k=15");
   cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());
@@ -102,7 +111,9 @@ void add_plan_command(CLI::App& app, int& exit_code) {
                   ".cfg: its [solver] or [benchmark] time_limit, as OMPL.app stops)")
       ->check(positive_number());
   cmd->add_option("--node-limit", o->node_limit,
-                  "Roadmap node limit (default: YAML defaults.node_limit, else 20000; .cfg: none, as OMPL.app)")
+                  "Node limit: roadmap nodes, grid-dp's settled cells (default: YAML defaults.node_limit, "
+                  "else the planner's: 20000 for roadmap planners, none for grid-dp, which the map bounds; "
+                  ".cfg: none, as OMPL.app)")
       ->check(positive_integer());
   cmd->add_option("--edge-check", o->edge_check,
                   "Edge checks: discrete (at the space's resolution; the solution path is certified before "
@@ -117,6 +128,7 @@ void add_plan_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--json", o->json, "Print the run record as JSON");
   cmd->add_flag("--force", o->force, "Overwrite existing output files");
   add_map_query_options(cmd, o->map);
+  add_arm_options(cmd, o->arm);
   o->cmd = cmd;
   cmd->callback([o, &exit_code] { exit_code = run_plan(*o); });
 }

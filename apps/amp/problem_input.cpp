@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include "amp/core/error.hpp"
+#include "amp/world/arm_problem.hpp"
 
 namespace amp::cli {
 
@@ -11,6 +12,29 @@ void add_map_query_options(CLI::App* cmd, MapQuery& q) {
   cmd->add_option("--goal", q.goal, "With a ROS map_server YAML as the problem: the goal X Y")->expected(2);
   cmd->add_option("--radius", q.radius, "With a ROS map_server YAML as the problem: the disc robot's radius [0.22]")
       ->check(CLI::PositiveNumber.description(""));
+}
+
+void add_arm_options(CLI::App* cmd, ArmInput& a) {
+  cmd->add_option("--urdf", a.urdf, "An arm: its URDF (with --srdf, --scene and --request, instead of a problem file)");
+  cmd->add_option("--srdf", a.srdf, "An arm: its SRDF (the planning group, disabled collision pairs)");
+  cmd->add_option("--scene", a.scene, "An arm: a MoveIt PlanningScene YAML (the obstacles)");
+  cmd->add_option("--request", a.request, "An arm: a MoveIt MotionPlanRequest YAML (group, start, joint goal)");
+  cmd->add_option("--package-path", a.package_paths,
+                  "An arm: a folder where package://NAME/... meshes are looked for, beside the URDF's (repeatable)");
+}
+
+world::Problem load_arm_input(const ArmInput& a, const std::string& problem_file) {
+  if (!problem_file.empty()) {
+    throw Error("--urdf: give either a problem file (" + problem_file + ") or --urdf, --srdf, --scene and --request");
+  }
+  const std::pair<const char*, const std::string*> flags[] = {
+      {"--urdf", &a.urdf}, {"--srdf", &a.srdf}, {"--scene", &a.scene}, {"--request", &a.request}};
+  for (const auto& [flag, value] : flags) {
+    if (value->empty()) throw Error(std::string(flag) + ": an arm problem needs --urdf, --srdf, --scene and --request");
+  }
+  world::ArmFiles files{a.urdf, a.srdf, a.scene, a.request, {}};
+  for (const std::string& p : a.package_paths) files.package_paths.emplace_back(p);
+  return world::load_arm_problem(files);
 }
 
 world::Problem load_problem_input(const std::string& file, const MapQuery& q, bool needs_goal, const CLI::App& cmd) {

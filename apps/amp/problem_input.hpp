@@ -18,6 +18,20 @@ struct MapQuery {
 // --start X Y, --goal X Y and --radius R on `cmd`.
 void add_map_query_options(CLI::App* cmd, MapQuery& q);
 
+// A MoveIt user's four files instead of a problem file (`amp plan --urdf ... --request ...`).
+struct ArmInput {
+  std::string urdf, srdf, scene, request;
+  std::vector<std::string> package_paths;
+  bool given() const { return !urdf.empty() || !srdf.empty() || !scene.empty() || !request.empty(); }
+};
+
+// --urdf, --srdf, --scene, --request and --package-path on `cmd`.
+void add_arm_options(CLI::App* cmd, ArmInput& a);
+
+// The arm problem of the four files; throws amp::Error naming the flag when one is missing or a
+// problem file is given too.
+world::Problem load_arm_input(const ArmInput& a, const std::string& problem_file);
+
 // The problem in `file`; for a map_server YAML, world::load_map_problem with the query's start, goal
 // (the start when !needs_goal and no --goal) and radius. Throws amp::Error naming the flag for a map
 // without --start (or --goal, when needed), or for --start/--goal/--radius given with a problem

@@ -1,6 +1,7 @@
 // `amp render`: draws a problem, a path file and optionally a roadmap as SVG.
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "amp/core/path_file.hpp"
 #include "amp/roadmap/run.hpp"
@@ -37,7 +38,7 @@ int run_render(const RenderOptions& o) {
     // A roadmap is drawn from a fresh run of the planner with the given seed.
     const std::string planner = resolve_planner(o.planner, problem);
     const roadmap::RunOutcome run =
-        roadmap::execute_run(problem, planner, {}, o.seed, problem.defaults.time_limit_s, problem.defaults.node_limit);
+        roadmap::execute_run(problem, planner, {}, o.seed, problem.defaults.time_limit_s, std::nullopt);
     if (run.roadmap) {
       drawing = viz::drawing_of(*run.roadmap);
       scene.roadmap = &drawing;

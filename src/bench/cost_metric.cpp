@@ -40,6 +40,14 @@ bool text_column(std::string_view name) {
   return name.starts_with("param.");
 }
 
+// Words of a metric's name that say it counts something achieved, so more is better.
+bool achievement_word(std::string_view w) {
+  for (std::string_view a : {"solved", "success", "successes", "reached", "arrived", "clearance", "coverage"}) {
+    if (w == a) return true;
+  }
+  return false;
+}
+
 bool identifier_like(std::string_view s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
   for (unsigned char c : s) {
@@ -72,6 +80,29 @@ MetricSample metric_sample(const core::RunRecord& r, std::string_view name) {
 
 std::string metric_label(std::string_view name) {
   return name == kDefaultCost ? std::string("CD calls") : std::string(name);
+}
+
+CostDirection default_cost_direction(std::string_view name) {
+  if (name == "path_clearance") return CostDirection::kHigher;
+  const core::RunRecord probe;  // column() of any record says whether the name is a column
+  if (column(probe, name)) return CostDirection::kLower;  // the other columns count work or length
+  std::size_t begin = 0;
+  while (begin <= name.size()) {
+    std::size_t end = name.find_first_of("_.-", begin);
+    if (end == std::string_view::npos) end = name.size();
+    if (achievement_word(name.substr(begin, end - begin))) return CostDirection::kHigher;
+    begin = end + 1;
+  }
+  return CostDirection::kLower;
+}
+
+std::string_view to_string(CostDirection d) { return d == CostDirection::kHigher ? "higher" : "lower"; }
+
+CostDirection parse_cost_direction(std::string_view word) {
+  if (word == "higher") return CostDirection::kHigher;
+  if (word == "lower") return CostDirection::kLower;
+  throw ParameterError("expected 'higher' or 'lower' (which values of the cost are better), got '" +
+                       std::string(word) + "'");
 }
 
 }  // namespace amp::bench

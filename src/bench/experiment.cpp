@@ -1,8 +1,11 @@
 #include "amp/bench/experiment.hpp"
 
+#include "amp/world/arm_problem.hpp"
+
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string>
 #include <system_error>
 #include <type_traits>
 
@@ -120,10 +123,15 @@ void check_nav_tasks(const std::vector<ExperimentProblem>& problems, const world
 
 std::string experiment_fingerprint(const Experiment& e) {
   std::ostringstream canon;
-  canon << "seed=" << e.seed << ";runs=" << e.runs << ";time=" << e.time_limit_s << ";nodes=" << e.node_limit << ';';
+  canon << "seed=" << e.seed << ";runs=" << e.runs << ";time=" << e.time_limit_s << ';';
+  // A given limit keeps the fingerprints of files that set one; no limit is a setting of its own.
+  canon << "nodes=" << (e.node_limit ? std::to_string(*e.node_limit) : std::string("default")) << ';';
   if (e.common_seeds) canon << "common_seeds;";  // only when set: older fingerprints stay valid
   if (e.cost != kDefaultCost) canon << "cost=" << e.cost << ';';  // likewise
-  for (const auto& p : e.problems) canon << "problem=" << p.label << ':' << fnv1a(read_file(p.file)) << ';';
+  for (const auto& p : e.problems) {
+    canon << "problem=" << p.label << ':' << fnv1a(read_file(p.file)) << ';';
+    for (const auto& f : p.inputs) canon << "input=" << fnv1a(read_file(f)) << ';';
+  }
   for (const auto& c : e.planners) {
     canon << "planner=" << c.label << ':' << c.planner;
     for (const auto& [k, v] : c.params) canon << ',' << k << '=' << v.to_string();
@@ -168,12 +176,64 @@ core::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std
   return params;
 }
 
+// `{arm_folder: F, urdf: U, srdf: S, count: N}`: every sceneNNNN.yaml of folder F with its
+// requestNNNN.yaml (MotionBenchMaker's layout), in name order, the first N when given; each a
+// problem named <folder>-requestNNNN (docs/experiment-format.md, "Arm folders").
+std::vector<ExperimentProblem> arm_folder_problems(const world::YamlFields& p) {
+  p.allow_only({"arm_folder", "urdf", "srdf", "count", "package_paths"});
+  const std::filesystem::path folder = p.file().parent_path() / p.string("arm_folder");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) p.fail("arm_folder", "no such folder '" + folder.string() + "'");
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("scene", 0) == 0 && entry.path().extension() == ".yaml") scenes.push_back(entry.path());
+  }
+  std::sort(scenes.begin(), scenes.end());
+  const long long count = p.integer("count", static_cast<long long>(scenes.size()));
+  if (count < 1) p.fail("count", "expected a positive integer");
+  if (scenes.size() > static_cast<std::size_t>(count)) scenes.resize(static_cast<std::size_t>(count));
+  if (scenes.empty()) p.fail("arm_folder", "no sceneNNNN.yaml in '" + folder.string() + "'");
+  std::vector<std::filesystem::path> package_paths;
+  if (p.has("package_paths")) {
+    const world::YamlFields paths = p.child("package_paths");
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+      if (!paths.element(k).node().IsScalar()) paths.element(k).fail("", "expected a folder");
+      package_paths.push_back(p.file().parent_path() / paths.element(k).node().Scalar());
+    }
+  }
+  world::ArmDescription robot;
+  try {
+    robot = world::load_arm_description(p.file_path("urdf"), p.file_path("srdf"), package_paths);
+  } catch (const Error& err) {
+    p.fail("", err.what());
+  }
+  std::vector<ExperimentProblem> out;
+  for (const std::filesystem::path& scene : scenes) {
+    const std::filesystem::path request = folder / ("request" + scene.filename().string().substr(5));
+    if (!std::filesystem::is_regular_file(request, ec)) {
+      p.fail("arm_folder", "no " + request.filename().string() + " beside " + scene.filename().string());
+    }
+    ExperimentProblem ep;
+    ep.file = request;
+    ep.inputs = {scene, robot.urdf, robot.srdf};
+    try {
+      ep.problem = std::make_shared<const world::Problem>(world::load_arm_problem(robot, scene, request));
+    } catch (const Error& err) {
+      p.fail("arm_folder", err.what());
+    }
+    ep.label = ep.problem->name;
+    out.push_back(std::move(ep));
+  }
+  return out;
+}
+
 Experiment load_experiment(const std::filesystem::path& file) {
   const world::YamlFields root(world::load_yaml_file(file), file, "");
   if (!root.is_map()) root.fail("", "an experiment file must be a YAML mapping");
   root.allow_only(
-      {"name", "description", "seed", "runs", "time_limit", "node_limit", "common_seeds", "cost", "problems",
-       "planners"});
+      {"name", "description", "seed", "runs", "time_limit", "node_limit", "common_seeds", "cost", "cost_direction",
+       "problems", "planners"});
   Experiment e;
   e.file = file;
   e.name = root.string("name", file.stem().string());
@@ -184,9 +244,11 @@ Experiment load_experiment(const std::filesystem::path& file) {
   if (runs < 1 || runs > 10'000'000) root.fail("runs", "expected an integer in [1, 10000000], got " + std::to_string(runs));
   e.runs = static_cast<int>(runs);
   e.time_limit_s = root.positive("time_limit", e.time_limit_s);
-  const long long nodes = root.integer("node_limit", static_cast<long long>(e.node_limit));
-  if (nodes < 1) root.fail("node_limit", "expected a positive integer, got " + std::to_string(nodes));
-  e.node_limit = static_cast<std::size_t>(nodes);
+  if (root.has("node_limit")) {  // absent: each run's problem or planner default
+    const long long nodes = root.integer("node_limit", 0);
+    if (nodes < 1) root.fail("node_limit", "expected a positive integer, got " + std::to_string(nodes));
+    e.node_limit = static_cast<std::size_t>(nodes);
+  }
   e.common_seeds = root.boolean("common_seeds", false);
   e.cost = root.string("cost", std::string(kDefaultCost));
   try {
@@ -194,12 +256,27 @@ Experiment load_experiment(const std::filesystem::path& file) {
   } catch (const Error& err) {
     root.fail("cost", err.what());
   }
+  e.cost_direction = default_cost_direction(e.cost);
+  if (root.has("cost_direction")) {
+    try {
+      e.cost_direction = parse_cost_direction(root.string("cost_direction"));
+    } catch (const ParameterError& err) {
+      root.fail("cost_direction", err.what());
+    }
+  }
 
   const world::YamlFields problems = root.child("problems");
   if (problems.size() == 0) problems.fail("", "expected at least one problem");
   std::set<std::string> labels;
   for (std::size_t i = 0; i < problems.size(); ++i) {
     const world::YamlFields p = problems.element(i);
+    if (p.is_map() && p.has("arm_folder")) {
+      for (ExperimentProblem& ep : arm_folder_problems(p)) {
+        if (!labels.insert(ep.label).second) p.fail("", "problem name '" + ep.label + "' appears twice");
+        e.problems.push_back(std::move(ep));
+      }
+      continue;
+    }
     ExperimentProblem ep;
     if (p.node().IsScalar()) {
       const std::filesystem::path rel = p.node().Scalar();

@@ -25,7 +25,8 @@ MethodKind method_kind(const std::string& name) {
 }
 
 MethodRun run_method(const world::Problem& problem, MethodKind kind, const std::string& method,
-                     const core::ParamMap& params, std::uint64_t seed, double time_limit_s, std::size_t node_limit,
+                     const core::ParamMap& params, std::uint64_t seed, double time_limit_s,
+                     std::optional<std::size_t> node_limit,
                      const std::atomic<bool>* cancel) {
   MethodRun out;
   switch (kind) {

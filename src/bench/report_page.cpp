@@ -54,15 +54,36 @@ std::string mark(bool best, const std::string& html) {
 
 const Json& cost_of(const Json& planner) { return text::cost_json(planner); }
 
-// Index of the planner with the smallest finite cost[key], if more than one planner.
-std::optional<std::size_t> lowest(const Json& planners, const char* key) {
+// Index of the planner with the best finite cost[key] in direction d, if more than one planner: the
+// mean goes the cost's way, the CV is always better lower.
+std::optional<std::size_t> best_of(const Json& planners, const char* key, CostDirection d) {
   std::optional<std::size_t> best;
   if (planners.size() < 2) return best;
   for (std::size_t i = 0; i < planners.size(); ++i) {
     const double v = text::number_at(cost_of(planners[i]), key);
-    if (std::isfinite(v) && (!best || v < text::number_at(cost_of(planners[*best]), key))) best = i;
+    if (std::isfinite(v) && (!best || better(d, v, text::number_at(cost_of(planners[*best]), key)))) best = i;
   }
   return best;
+}
+
+// "solved", or "complete" for a method whose run is a sequence of worlds (its status is the
+// sequence's: a complete sequence may have solved few of its worlds).
+const char* solved_word(const Json& planner) {
+  return text::run_kind(planner) == text::RunKind::kWorldSequence ? "complete" : "solved";
+}
+
+// Under the cost table, when some method's runs are sequences of worlds: what its Solved cell counts.
+void sequences_note(std::ostream& out, const Json& planners) {
+  std::vector<std::string> names;
+  for (const Json& pl : planners) {
+    if (text::run_kind(pl) == text::RunKind::kWorldSequence) {
+      names.push_back("<strong>" + xml_escape(pl.value("name", std::string())) + "</strong>");
+    }
+  }
+  if (names.empty()) return;
+  out << "<p class=\"note\">" << text::join_words(names) << (names.size() == 1 ? " runs" : " run")
+      << " sequences of worlds: each run is one sequence, and Solved counts sequences driven to their end, "
+         "not worlds solved.</p>\n";
 }
 
 bool heavy_tailed(const std::vector<std::vector<double>>& cost) {
@@ -120,10 +141,12 @@ void overview(std::ostream& out, const Experiment& e, const Json& problems) {
     out << "</section>\n";
     return;
   }
-  const text::CostStyle style = text::cost_style(e.cost);
-  out << "<h2>Overview</h2><p class=\"note\">Mean run cost in " << xml_escape(style.label)
-      << ", its coefficient of variation and the share of solved runs; the lowest mean and CV of each problem are "
-         "marked.</p>\n"
+  const text::CostStyle style = text::cost_style(e.cost, e.cost_direction);
+  out << "<h2>Overview</h2><p class=\"note\">"
+      << (style.higher() ? "Mean " + xml_escape(style.label) + " (higher is better)"
+                         : "Mean run cost in " + xml_escape(style.label))
+      << ", its coefficient of variation and the share of solved runs; the "
+      << (style.higher() ? "highest" : "lowest") << " mean and the lowest CV of each problem are marked.</p>\n"
          "<table class=\"overview\"><thead><tr><th>Problem</th>";
   for (std::size_t c = 0; c < e.planners.size(); ++c) {
     out << "<th>" << swatch(c) << xml_escape(e.planners[c].label) << "</th>";
@@ -131,26 +154,36 @@ void overview(std::ostream& out, const Experiment& e, const Json& problems) {
   out << "</tr></thead><tbody>\n";
   for (std::size_t p = 0; p < problems.size(); ++p) {
     const Json& planners = problems[p].value("planners", Json::array());
-    const auto low_mean = lowest(planners, "mean"), low_cv = lowest(planners, "cv_percent");
+    const auto best_mean = best_of(planners, "mean", e.cost_direction);
+    const auto low_cv = best_of(planners, "cv_percent", CostDirection::kLower);
     out << "<tr><td><a href=\"#problem-" << p << "\">" << xml_escape(problems[p].value("name", std::string()))
         << "</a></td>";
     for (std::size_t c = 0; c < planners.size(); ++c) {
       const Json& cost = cost_of(planners[c]);
-      out << "<td>" << mark(low_mean == c, style.format(text::number_at(cost, "mean"))) << "<br><small>"
-          << mark(low_cv == c, "CV " + text::percent(std::round(text::number_at(cost, "cv_percent")))) << " \u00b7 " << text::percent(std::round(text::number_at(planners[c], "solved_percent")))
-          << " solved</small></td>";
+      out << "<td>" << mark(best_mean == c, style.format(text::number_at(cost, "mean"))) << "<br><small>"
+          << mark(low_cv == c, "CV " + text::percent(std::round(text::number_at(cost, "cv_percent")))) << " \u00b7 "
+          << text::percent(std::round(text::number_at(planners[c], "solved_percent"))) << " "
+          << solved_word(planners[c]) << "</small></td>";
     }
     out << "</tr>\n";
   }
   out << "</tbody></table></section>\n";
 }
 
-void cost_table(std::ostream& out, const Json& problem, const std::string& metric) {
+// The cost table's heading: the run-cost paper's words for a cost, the metric's name for a value
+// that is better higher.
+std::string cost_heading(const Experiment& e) {
+  if (e.cost_direction == CostDirection::kHigher) return "<h3>" + xml_escape(e.cost) + " (higher is better)</h3>";
+  return e.cost == kDefaultCost ? std::string("<h3>Run cost in collision-detection calls</h3>")
+                                : "<h3>Run cost: " + xml_escape(e.cost) + "</h3>";
+}
+
+void cost_table(std::ostream& out, const Experiment& e, const Json& problem) {
   const Json& planners = problem.value("planners", Json::array());
-  const auto low_mean = lowest(planners, "mean"), low_cv = lowest(planners, "cv_percent");
-  const text::CostStyle style = text::cost_style(metric);
-  out << (metric == kDefaultCost ? std::string("<h3>Run cost in collision-detection calls</h3>")
-                                 : "<h3>Run cost: " + xml_escape(metric) + "</h3>")
+  const auto best_mean = best_of(planners, "mean", e.cost_direction);
+  const auto low_cv = best_of(planners, "cv_percent", CostDirection::kLower);
+  const text::CostStyle style = text::cost_style(e.cost, e.cost_direction);
+  out << cost_heading(e)
       << "\n<table class=\"stats\"><thead>"
          "<tr class=\"group\"><th colspan=\"3\"></th><th colspan=\"3\">as the paper\u2019s Table 1</th>"
          "<th colspan=\"5\">five-number summary</th><th colspan=\"3\">medians</th></tr>"
@@ -166,14 +199,16 @@ void cost_table(std::ostream& out, const Json& problem, const std::string& metri
     };
     const double n = text::number_at(pl, "n"), solved = text::number_at(pl, "solved");
     out << "<tr><td>" << swatch(c) << "<strong>" << xml_escape(pl.value("name", std::string())) << "</strong></td><td>"
-        << text::count(n) << "</td><td>" << text::count(solved) << " <small>("
+        << text::count(n) << "</td><td>" << text::count(solved) << " <small>"
+        << (text::run_kind(pl) == text::RunKind::kWorldSequence ? "complete " : "") << "("
         << text::percent(text::number_at(pl, "solved_percent")) << ")</small></td>"
-        << "<td>" << mark(low_mean == c, style.format(text::number_at(cost, "mean"))) << "</td>" << cell("std")
+        << "<td>" << mark(best_mean == c, style.format(text::number_at(cost, "mean"))) << "</td>" << cell("std")
         << "<td>" << mark(low_cv == c, text::percent(std::round(text::number_at(cost, "cv_percent")))) << "</td>" << cell("min") << cell("q1")
         << cell("median") << cell("q3") << cell("max") << "<td>" << text::seconds(median_of("time_s")) << "</td><td>"
         << text::count(median_of("nodes")) << "</td><td>" << text::real(median_of("path_length")) << "</td></tr>\n";
   }
   out << "</tbody></table>\n";
+  sequences_note(out, planners);
 }
 
 void phase_table(std::ostream& out, const Json& problem) {
@@ -220,8 +255,9 @@ void charts(std::ostream& out, const Experiment& e, const std::vector<std::vecto
   box.width_px = kBoxWidthPx;
   box.height_px = kBoxHeightPx;
   box.scale = log ? viz::AxisScale::kLog : viz::AxisScale::kLinear;
-  box.title = "Run cost per planner";
-  box.value_label = text::cost_style(e.cost).label;
+  const text::CostStyle style = text::cost_style(e.cost, e.cost_direction);
+  box.title = style.higher() ? style.label + " per method (higher is better)" : std::string("Run cost per planner");
+  box.value_label = style.label;
   const bool non_negative = std::all_of(cost.begin(), cost.end(), [](const auto& g) {
     return std::all_of(g.begin(), g.end(), [](double v) { return v >= 0.0; });
   });

@@ -26,11 +26,13 @@ extern const char* const kStyle;  // the page's whole stylesheet
 // The colour of planner configuration `i` in every table swatch and chart of the page.
 std::string planner_color(std::size_t i);
 
-// Planner configurations and a problems x planners matrix of mean cost, CV and solved %.
+// Planner configurations and a problems x planners matrix of mean cost, CV and solved % (the best
+// mean marked in the cost's direction, the lowest CV).
 void overview(std::ostream& out, const Experiment& e, const nlohmann::json& problems);
-// The paper's Table 1 for one problem (summary.json's entry) on the experiment's cost `metric`,
-// extended with the five-number summary and median time, nodes and path length.
-void cost_table(std::ostream& out, const nlohmann::json& problem, const std::string& metric);
+// The paper's Table 1 for one problem (summary.json's entry) on the experiment's cost, the best mean
+// marked in the cost's direction, extended with the five-number summary and median time, nodes and
+// path length; a note when some method's runs are sequences of worlds.
+void cost_table(std::ostream& out, const Experiment& e, const nlohmann::json& problem);
 // Every other metric the methods report (summary.json's "metrics"): median and quartiles per method,
 // descriptive only. Nothing when no method reports one.
 void metrics_table(std::ostream& out, const nlohmann::json& problem);

@@ -29,16 +29,7 @@ std::string printf_string(const char* format, double v) {
 
 std::string name_html(const std::string& name) { return "<strong>" + viz::xml_escape(name) + "</strong>"; }
 std::string possessive_html(const std::string& name) { return name_html(name) + "\u2019s"; }
-
-// "a", "a and b", "a, b and c".
-std::string join_words(const std::vector<std::string>& items) {
-  std::string out;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) out += i + 1 == items.size() ? " and " : ", ";
-    out += items[i];
-  }
-  return out;
-}
+std::string quantity_html(const CostStyle& style) { return viz::xml_escape(style.quantity()); }
 
 double alpha_of(const nlohmann::json& tests) {
   if (tests.contains("regwq")) {
@@ -69,29 +60,38 @@ std::string f_test_sentence(const std::string& title, const std::string& note, c
          ") = " + statistic(number_at(t, "statistic")) + ", " + viz::xml_escape(p_value(p)) + ").";
 }
 
-std::string kruskal_sentence(const nlohmann::json& t, double alpha) {
+std::string kruskal_sentence(const nlohmann::json& t, double alpha, const CostStyle& style) {
   std::string s = "<em>Kruskal\u2013Wallis rank test</em>: ";
   if (!computed(t)) return s + not_computed(t);
   const double p = number_at(t, "p_value");
-  s += p < alpha ? "the run-cost distributions differ significantly in location"
-                 : "the run-cost distributions do not differ significantly in location";
+  s += style.higher() ? "the distributions of " + quantity_html(style) : std::string("the run-cost distributions");
+  s += p < alpha ? " differ significantly in location" : " do not differ significantly in location";
   return s + " (H = " + statistic(number_at(t, "statistic")) + ", df = " + degrees_of_freedom(number_at(t, "df1")) +
          ", " + viz::xml_escape(p_value(p)) + ").";
 }
 
-std::string regwq_sentence(const nlohmann::json& r) {
-  std::string s = "<em>REGWQ</em> at \u03b1 = " + real(number_at(r, "alpha")) + " (experimentwise): ";
-  if (r.value("status", std::string("ok")) != "ok") {
-    return s + "not computed (" + viz::xml_escape(r.value("status", std::string())) + ").";
-  }
+// REGWQ's homogeneous subsets as "{a, b}", best mean first: summary.json lists them (and their
+// members) by ascending mean, which is best first only when lower is better.
+std::vector<std::string> regwq_subsets(const nlohmann::json& r, const CostStyle& style) {
   std::vector<std::string> subsets;
   for (const auto& sub : r.value("subsets", nlohmann::json::array())) {
     std::vector<std::string> names;
     for (const auto& n : sub) names.push_back(name_html(n.get<std::string>()));
+    if (style.higher()) std::reverse(names.begin(), names.end());
     std::string list;
     for (std::size_t i = 0; i < names.size(); ++i) list += (i ? ", " : "") + names[i];
     subsets.push_back("{" + list + "}");
   }
+  if (style.higher()) std::reverse(subsets.begin(), subsets.end());
+  return subsets;
+}
+
+std::string regwq_sentence(const nlohmann::json& r, const CostStyle& style) {
+  std::string s = "<em>REGWQ</em> at \u03b1 = " + real(number_at(r, "alpha")) + " (experimentwise): ";
+  if (r.value("status", std::string("ok")) != "ok") {
+    return s + "not computed (" + viz::xml_escape(r.value("status", std::string())) + ").";
+  }
+  const std::vector<std::string> subsets = regwq_subsets(r, style);
   // Who differs from whom; told planner by planner, the planner with most differences first, each
   // pair once (as the paper: "PRM-C's mean differs from PRM-G's and PRM-L's").
   std::map<std::string, std::set<std::string>> differs;
@@ -107,10 +107,11 @@ std::string regwq_sentence(const nlohmann::json& r) {
     }
   }
   if (differs.empty()) {
-    return s + "no two mean run costs differ significantly" +
-           (subsets.size() == 1 ? " (one homogeneous subset " + subsets[0] + ")." : ".");
+    return s + (style.higher() ? "no two means of " + quantity_html(style) : std::string("no two mean run costs")) +
+           " differ significantly" + (subsets.size() == 1 ? " (one homogeneous subset " + subsets[0] + ")." : ".");
   }
   s += subsets.size() == 1 ? "homogeneous subset " : "homogeneous subsets ";
+  if (style.higher() && subsets.size() > 1) s += "(highest means first) ";
   s += join_words(subsets) + ": ";
   std::vector<std::string> clauses;
   while (!differs.empty()) {
@@ -129,12 +130,87 @@ std::string regwq_sentence(const nlohmann::json& r) {
       if (differs[n].empty()) differs.erase(n);
     }
     differs.erase(best);
-    clauses.push_back(possessive_html(best) + " mean run cost differs from " + join_words(others));
+    clauses.push_back(possessive_html(best) + " mean " + quantity_html(style) + " differs from " + join_words(others));
   }
   return s + join_words(clauses) + ".";
 }
 
+// A cost made of runs cut at a limit says more about the limit than about the method.
+std::string censored(const nlohmann::json& p, const CostStyle& style) {
+  const double n = number_at(p, "n"), solved = number_at(p, "solved");
+  if (!(n > 0 && solved < n)) return std::string();
+  return " \u2013 but " + count(n - solved) + " of its " + count(n) + " runs stopped at a limit, so this " +
+         (style.higher() ? "mean" : "cost") + " is censored";
+}
+
+// "X has the lowest mean run cost (...)" (or the highest mean, when higher is better) and "Y has
+// the lowest coefficient of variation (...)": a smaller spread is better whichever way the cost goes.
+std::vector<std::string> best_sentences(const nlohmann::json& problem, const CostStyle& style) {
+  std::vector<std::string> out;
+  const auto& planners = problem.value("planners", nlohmann::json::array());
+  const nlohmann::json* best_mean = nullptr;
+  const nlohmann::json* low_cv = nullptr;
+  for (const auto& p : planners) {
+    const double mean = number_at(cost_json(p), "mean"), cv = number_at(cost_json(p), "cv_percent");
+    const double best = best_mean ? number_at(cost_json(*best_mean), "mean") : 0.0;
+    if (std::isfinite(mean) && (!best_mean || better(style.direction, mean, best))) best_mean = &p;
+    if (std::isfinite(cv) && (!low_cv || cv < number_at(cost_json(*low_cv), "cv_percent"))) low_cv = &p;
+  }
+  if (planners.size() > 1 && best_mean != nullptr) {
+    const std::string value = style.format(number_at(cost_json(*best_mean), "mean"));
+    const std::string what = style.higher() ? " has the highest mean " + quantity_html(style) + " (" + value + ")"
+                                            : " has the lowest mean run cost (" + value + " " +
+                                                  viz::xml_escape(style.label) + ")";
+    out.push_back(name_html(best_mean->value("name", std::string())) + what + censored(*best_mean, style) + ".");
+  }
+  if (low_cv != nullptr) {
+    const std::string cv = percent(std::round(number_at(cost_json(*low_cv), "cv_percent")));
+    out.push_back(name_html(low_cv->value("name", std::string())) +
+                  (planners.size() > 1 ? " has the lowest coefficient of variation (" + cv + ")"
+                                       : " has a coefficient of variation of " + cv) +
+                  censored(*low_cv, style) + ".");
+  }
+  return out;
+}
+
+// "X 1 of 4 (1 timeout)"; a sequence of worlds says "sequences incomplete", since its status is the
+// sequence's, not its worlds'.
+std::string unsolved_item(const nlohmann::json& p) {
+  const double n = number_at(p, "n"), solved = number_at(p, "solved");
+  if (!(n > 0)) return name_html(p.value("name", std::string())) + " has no runs";
+  std::vector<std::string> kinds;
+  const nlohmann::json statuses = p.value("statuses", nlohmann::json::object());
+  for (const auto& [status, k] : statuses.items()) {
+    std::string words = status;
+    std::replace(words.begin(), words.end(), '_', ' ');  // node_limit -> node limit
+    if (status != "solved") kinds.push_back(count(k.get<double>()) + " " + viz::xml_escape(words));
+  }
+  const bool sequence = run_kind(p) == RunKind::kWorldSequence;
+  return name_html(p.value("name", std::string())) + " " + count(n - solved) + " of " + count(n) +
+         (sequence ? " sequences incomplete" : "") + " (" + join_words(kinds) + ")";
+}
+
+std::string unsolved_sentence(const nlohmann::json& problem) {
+  std::vector<std::string> unsolved;
+  for (const auto& p : problem.value("planners", nlohmann::json::array())) {
+    const double n = number_at(p, "n"), solved = number_at(p, "solved");
+    if (!(n > 0) || solved < n) unsolved.push_back(unsolved_item(p));
+  }
+  if (unsolved.empty()) return std::string();
+  return "Not solved: " + join_words(unsolved) +
+         ". Runs stopped at a limit count with the cost they had spent (censored at the limit).";
+}
+
 }  // namespace
+
+std::string join_words(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += i + 1 == items.size() ? " and " : ", ";
+    out += items[i];
+  }
+  return out;
+}
 
 double number_at(const nlohmann::json& j, const char* key) {
   if (!j.is_object()) return std::numeric_limits<double>::quiet_NaN();
@@ -188,11 +264,18 @@ std::string real(double v) {
   return printf_string("%.4g", v);
 }
 
-CostStyle cost_style(const std::string& metric) {
+CostStyle cost_style(const std::string& metric, CostDirection direction) {
   CostStyle s;
   s.label = metric_label(metric);
   s.is_time = metric == "wall_time_s";
+  s.direction = direction;
   return s;
+}
+
+RunKind run_kind(const nlohmann::json& planner) {
+  if (planner.value("kind", std::string()) != "navigation") return RunKind::kPlanning;
+  const bool worlds = planner.contains("metrics") && planner["metrics"].contains(kWorldsExtra);
+  return worlds ? RunKind::kWorldSequence : RunKind::kNavigation;
 }
 
 const nlohmann::json& cost_json(const nlohmann::json& planner) {
@@ -202,55 +285,8 @@ const nlohmann::json& cost_json(const nlohmann::json& planner) {
 }
 
 std::vector<std::string> findings(const nlohmann::json& problem, const CostStyle& style) {
-  std::vector<std::string> out;
-  const auto& planners = problem.value("planners", nlohmann::json::array());
-  // Lowest mean and lowest CV among planners where they exist.
-  const nlohmann::json* low_mean = nullptr;
-  const nlohmann::json* low_cv = nullptr;
-  std::vector<std::string> unsolved;
-  for (const auto& p : planners) {
-    const auto& cost = cost_json(p);
-    const double mean = number_at(cost, "mean"), cv = number_at(cost, "cv_percent");
-    if (std::isfinite(mean) && (!low_mean || mean < number_at(cost_json(*low_mean), "mean"))) low_mean = &p;
-    if (std::isfinite(cv) && (!low_cv || cv < number_at(cost_json(*low_cv), "cv_percent"))) low_cv = &p;
-    const double n = number_at(p, "n"), solved = number_at(p, "solved");
-    if (n > 0 && solved < n) {
-      std::vector<std::string> kinds;
-      const nlohmann::json statuses = p.value("statuses", nlohmann::json::object());
-      for (const auto& [status, k] : statuses.items()) {
-        std::string words = status;
-        std::replace(words.begin(), words.end(), '_', ' ');  // node_limit -> node limit
-        if (status != "solved") kinds.push_back(count(k.get<double>()) + " " + viz::xml_escape(words));
-      }
-      unsolved.push_back(name_html(p.value("name", std::string())) + " " + count(n - solved) + " of " + count(n) +
-                         " (" + join_words(kinds) + ")");
-    } else if (!(n > 0)) {
-      unsolved.push_back(name_html(p.value("name", std::string())) + " has no runs");
-    }
-  }
-  // A cost made of runs cut at a limit says more about the limit than about the planner.
-  auto censored = [](const nlohmann::json& p) {
-    const double n = number_at(p, "n"), solved = number_at(p, "solved");
-    return n > 0 && solved < n ? " – but " + count(n - solved) + " of its " + count(n) +
-                                     " runs stopped at a limit, so this cost is censored"
-                               : std::string();
-  };
-  if (planners.size() > 1 && low_mean != nullptr) {
-    out.push_back(name_html(low_mean->value("name", std::string())) + " has the lowest mean run cost (" +
-                  style.format(number_at(cost_json(*low_mean), "mean")) + " " + viz::xml_escape(style.label) +
-                  ")" + censored(*low_mean) + ".");
-  }
-  if (low_cv != nullptr) {
-    const std::string cv = percent(std::round(number_at(cost_json(*low_cv), "cv_percent")));
-    out.push_back(name_html(low_cv->value("name", std::string())) +
-                  (planners.size() > 1 ? " has the lowest coefficient of variation (" + cv + ")"
-                                       : " has a coefficient of variation of " + cv) +
-                  censored(*low_cv) + ".");
-  }
-  if (!unsolved.empty()) {
-    out.push_back("Not solved: " + join_words(unsolved) +
-                  ". Runs stopped at a limit count with the cost they had spent (censored at the limit).");
-  }
+  std::vector<std::string> out = best_sentences(problem, style);
+  if (const std::string s = unsolved_sentence(problem); !s.empty()) out.push_back(s);
   if (!problem.contains("tests")) {
     out.push_back("One planner only: no tests between planners.");
     return out;
@@ -262,13 +298,14 @@ std::vector<std::string> findings(const nlohmann::json& problem, const CostStyle
   }
   const double alpha = alpha_of(t);
   const auto test = [&](const char* key) { return t.value(key, nlohmann::json::object()); };
+  const std::string q = quantity_html(style);
   out.push_back(f_test_sentence("Brown\u2013Forsythe test", "Levene\u2019s test about the medians",
-                                test("levene_brown_forsythe"), "the variances of run cost", alpha));
-  out.push_back(f_test_sentence("One-way ANOVA", "", test("anova"), "the mean run costs", alpha));
-  out.push_back(f_test_sentence("Welch\u2019s ANOVA", "unequal variances", test("welch_anova"),
-                                "the mean run costs", alpha));
-  out.push_back(kruskal_sentence(test("kruskal_wallis"), alpha));
-  if (t.contains("regwq")) out.push_back(regwq_sentence(t["regwq"]));
+                                test("levene_brown_forsythe"), "the variances of " + q, alpha));
+  const std::string means = style.higher() ? "the means of " + q : std::string("the mean run costs");
+  out.push_back(f_test_sentence("One-way ANOVA", "", test("anova"), means, alpha));
+  out.push_back(f_test_sentence("Welch\u2019s ANOVA", "unequal variances", test("welch_anova"), means, alpha));
+  out.push_back(kruskal_sentence(test("kruskal_wallis"), alpha, style));
+  if (t.contains("regwq")) out.push_back(regwq_sentence(t["regwq"], style));
   out.push_back("Significance level \u03b1 = " + real(alpha) + " throughout.");
   return out;
 }

@@ -1,6 +1,7 @@
 #include "amp/bench/summary.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,7 @@ nlohmann::json tests_json(const Experiment& e, const std::vector<GroupMetrics>& 
   }
   nlohmann::json j;
   j["metric"] = metric;
+  j["direction"] = std::string(to_string(e.cost_direction));  // for REGWQ's subsets, ordered by ascending mean
   j["levene_brown_forsythe"] = test_json(stats::levene_test(cost, stats::LeveneCenter::kMedian));
   j["anova"] = test_json(stats::one_way_anova(cost).test);
   j["welch_anova"] = test_json(stats::welch_anova(cost));
@@ -82,6 +84,20 @@ nlohmann::json tests_json(const Experiment& e, const std::vector<GroupMetrics>& 
   j["regwq"] = {{"alpha", alpha}, {"status", std::string(stats::to_string(r.status))}, {"subsets", subsets},
                 {"pairs", pairs}, {"mse", num(r.mse)}, {"df_error", num(r.df_error)}};
   return j;
+}
+
+// The method with the best mean cost under the experiment's direction (the first of equals), or
+// nothing when fewer than two methods have a mean: what the report marks, said once for every reader.
+nlohmann::json best_json(const Experiment& e, const std::vector<GroupMetrics>& groups) {
+  std::optional<std::size_t> best;
+  std::vector<double> means;
+  for (std::size_t c = 0; c < groups.size(); ++c) {
+    means.push_back(groups[c].cost.empty() ? std::nan("") : stats::describe(groups[c].cost).mean);
+    if (std::isfinite(means[c]) && (!best || better(e.cost_direction, means[c], means[*best]))) best = c;
+  }
+  if (!best || groups.size() < 2) return nullptr;
+  return {{"name", e.planners[*best].label}, {"by", "mean"}, {"metric", e.cost}, {"mean", means[*best]},
+          {"direction", std::string(to_string(e.cost_direction))}};
 }
 
 }  // namespace
@@ -119,11 +135,13 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
                        {"seed", e.seed},
                        {"runs", e.runs},
                        {"time_limit_s", e.time_limit_s},
-                       {"node_limit", e.node_limit},
+                       // null: not given, each run's problem or planner default
+                       {"node_limit", e.node_limit ? nlohmann::json(*e.node_limit) : nlohmann::json()},
                        {"common_seeds", e.common_seeds},
                        {"fingerprint", e.fingerprint},
                        {"censoring", "runs stopped at a limit enter cost statistics with the cost spent"}};
   if (e.cost != kDefaultCost) out["experiment"]["cost"] = e.cost;  // only when set: default outputs unchanged
+  out["experiment"]["cost_direction"] = std::string(to_string(e.cost_direction));
   out["problems"] = nlohmann::json::array();
   for (std::size_t p = 0; p < e.problems.size(); ++p) {
     nlohmann::json pj = {{"name", e.problems[p].label}, {"file", e.problems[p].file.string()}};
@@ -146,6 +164,7 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
                              {"cd_calls_planning", describe_json(g.cd_calls_planning)},
                              {"nodes_training", describe_json(g.nodes_training)},
                              {"nodes_planning", describe_json(g.nodes_planning)}}}};
+      if (e.planners[c].kind == MethodKind::kNavigator) gj["kind"] = "navigation";  // planners: as before
       if (e.cost != kDefaultCost) {
         gj["cost"] = describe_json(g.cost);
         gj["cost"]["metric"] = e.cost;
@@ -159,6 +178,7 @@ nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, 
       }
       pj["planners"].push_back(std::move(gj));
     }
+    if (nlohmann::json best = best_json(e, metrics[p]); !best.is_null()) pj["best"] = std::move(best);
     if (e.planners.size() >= 2) pj["tests"] = tests_json(e, metrics[p], alpha);
     out["problems"].push_back(std::move(pj));
   }

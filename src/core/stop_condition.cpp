@@ -18,6 +18,11 @@ StopCondition::StopCondition(double time_limit_s, std::size_t node_limit, const 
   deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(capped));
 }
 
+StopCondition::StopCondition(double time_limit_s, std::size_t node_limit, const TimeSource& clock)
+    : StopCondition(time_limit_s, node_limit) {
+  clock_ = &clock;
+}
+
 StopReason StopCondition::check(std::size_t nodes) const {
   if (cancelled()) return StopReason::kCancelled;
   if (nodes >= node_limit_) return StopReason::kNodeLimit;
@@ -26,11 +31,13 @@ StopReason StopCondition::check(std::size_t nodes) const {
 
 bool StopCondition::time_up() const {
   if (cancelled()) return true;
-  if (!timed_out_ && Clock::now() >= deadline_) timed_out_ = true;
+  if (timed_out_) return true;
+  timed_out_ = clock_ != nullptr ? clock_->seconds_since_start() >= time_limit_s_ : Clock::now() >= deadline_;
   return timed_out_;
 }
 
 double StopCondition::elapsed_seconds() const {
+  if (clock_ != nullptr) return clock_->seconds_since_start();
   return std::chrono::duration<double>(Clock::now() - start_).count();
 }
 

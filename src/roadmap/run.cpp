@@ -43,14 +43,21 @@ core::ParamMap with_problem_params(const world::Problem& problem, const PlannerI
   return params;
 }
 
+std::size_t resolve_node_limit(std::optional<std::size_t> run_limit, const world::Problem& problem,
+                               const PlannerInfo& planner) {
+  return run_limit.value_or(problem.defaults.node_limit.value_or(planner.default_node_limit));
+}
+
 RunOutcome execute_run(const world::Problem& problem, const std::string& planner, const core::ParamMap& params,
-                       std::uint64_t seed, double time_limit_s, std::size_t node_limit,
+                       std::uint64_t seed, double time_limit_s, std::optional<std::size_t> node_limit,
                        const PlannerRegistry& registry, const std::atomic<bool>* cancel) {
   if (!problem.space || !problem.environment) {
     throw Error("problem '" + problem.name + "': no space or environment");
   }
   // Made before anything is timed: a bad planner name or parameter throws ParameterError here.
-  std::unique_ptr<Planner> p = registry.make(planner, with_problem_params(problem, registry.info(planner), params));
+  const PlannerInfo& info = registry.info(planner);
+  std::unique_ptr<Planner> p = registry.make(planner, with_problem_params(problem, info, params));
+  const std::size_t nodes = resolve_node_limit(node_limit, problem, info);
 
   RunOutcome out;
   core::RunRecord& r = out.record;
@@ -66,7 +73,7 @@ RunOutcome execute_run(const world::Problem& problem, const std::string& planner
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult result;
   try {
-    const core::StopCondition stop(time_limit_s, node_limit, cancel);
+    const core::StopCondition stop(time_limit_s, nodes, cancel);
     const PlanningContext ctx{*problem.space, *problem.environment, *checker, problem.seeds,
                               problem.defaults.edge_check, &stop};
     result = p->plan(ctx, stop, rng);

@@ -4,6 +4,7 @@
 
 #include "amp/core/edge_steps.hpp"
 #include "amp/core/error.hpp"
+#include "amp/world/arm_problem.hpp"
 #include "amp/world/grid_yaml.hpp"
 #include "amp/world/ompl_cfg.hpp"
 #include "amp/world/planar_yaml.hpp"
@@ -41,8 +42,58 @@ State read_state(const YamlFields& f, const core::Space& space) {
   return s;
 }
 
+// `edge_check:` and `defaults:` (planner, limits, parameters), which every kind of problem file may carry.
+void read_run_defaults(const YamlFields& root, Problem& p) {
+  if (root.has("edge_check")) {
+    try {
+      p.defaults.edge_check = core::parse_edge_check_mode(root.string("edge_check"));
+    } catch (const ParameterError& e) {
+      root.fail("edge_check", e.what());
+    }
+  }
+  if (root.has("defaults")) {
+    const YamlFields d = root.child("defaults");
+    d.allow_only({"planner", "time_limit", "node_limit", "params"});
+    p.defaults.planner = d.string("planner", p.defaults.planner);
+    p.defaults.time_limit_s = d.positive("time_limit", p.defaults.time_limit_s);
+    if (d.has("node_limit")) {  // absent: the planner's own default
+      const long long nl = d.integer("node_limit", 0);
+      if (nl <= 0) d.fail("node_limit", "expected a positive integer, got " + std::to_string(nl));
+      p.defaults.node_limit = static_cast<std::size_t>(nl);
+    }
+    if (d.has("params")) {
+      const YamlFields params = d.child("params");
+      for (const std::string& key : params.keys()) p.defaults.params[key] = params.string(key);
+    }
+  }
+}
+
+// A problem file naming a MoveIt user's four files (docs/problem-format.md, "Arms"), paths relative
+// to the problem file.
+Problem yaml_arm_problem(const YamlFields& root, const std::filesystem::path& file) {
+  root.allow_only({"name", "description", "urdf", "srdf", "scene", "request", "package_paths", "defaults", "edge_check"});
+  ArmFiles files{root.file_path("urdf"), root.file_path("srdf"), root.file_path("scene"), root.file_path("request"), {}};
+  if (root.has("package_paths")) {
+    const YamlFields paths = root.child("package_paths");
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+      const YAML::Node n = paths.element(i).node();
+      if (!n.IsScalar()) paths.element(i).fail("", "expected a folder");
+      files.package_paths.push_back(file.parent_path() / n.Scalar());
+    }
+  }
+  Problem p = load_arm_problem(files);
+  p.name = root.string("name", p.name);
+  p.file = file;
+  return p;
+}
+
 Problem yaml_problem(const YamlFields& root, const std::filesystem::path& file) {
   if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
+  if (root.has("urdf")) {
+    Problem p = yaml_arm_problem(root, file);
+    read_run_defaults(root, p);
+    return p;
+  }
   // `events:` (obstacles that appear or vanish while a robot drives) belongs to the nav module's
   // simulator, which reads it itself (nav::load_events); planners ignore it.
   root.allow_only({"name", "description", "bounds", "resolution", "world", "robot", "start", "goal", "seeds",
@@ -80,26 +131,7 @@ Problem yaml_problem(const YamlFields& root, const std::filesystem::path& file) 
     p.seeds.push_back(read_state(root.child("start"), *p.space));
     p.seeds.push_back(read_state(root.child("goal"), *p.space));
   }
-  if (root.has("edge_check")) {
-    try {
-      p.defaults.edge_check = core::parse_edge_check_mode(root.string("edge_check"));
-    } catch (const ParameterError& e) {
-      root.fail("edge_check", e.what());
-    }
-  }
-  if (root.has("defaults")) {
-    const YamlFields d = root.child("defaults");
-    d.allow_only({"planner", "time_limit", "node_limit", "params"});
-    p.defaults.planner = d.string("planner", p.defaults.planner);
-    p.defaults.time_limit_s = d.positive("time_limit", p.defaults.time_limit_s);
-    const long long nl = d.integer("node_limit", static_cast<long long>(p.defaults.node_limit));
-    if (nl <= 0) d.fail("node_limit", "expected a positive integer, got " + std::to_string(nl));
-    p.defaults.node_limit = static_cast<std::size_t>(nl);
-    if (d.has("params")) {
-      const YamlFields params = d.child("params");
-      for (const std::string& key : params.keys()) p.defaults.params[key] = params.string(key);
-    }
-  }
+  read_run_defaults(root, p);
   return p;
 }
 

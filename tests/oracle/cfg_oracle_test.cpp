@@ -41,7 +41,7 @@ std::string amp_verdict(const world::Problem& p, const world::ValidityChecker& c
 class CfgOracle : public ::testing::TestWithParam<CfgCase> {
  protected:
   void SetUp() override {
-    if (!fs::is_regular_file(GetParam().file)) GTEST_SKIP() << GetParam().file << " is absent on this machine";
+    if (!fs::is_regular_file(GetParam().file)) GTEST_SKIP() << GetParam().file << " is absent (the shared test data, ../shared beside the source tree)";
   }
 };
 

@@ -59,3 +59,23 @@ def test_bench_writes_the_outputs(tmp_path):
     assert (tmp_path / "out" / "runs.csv").exists()
     assert result["summary"]["experiment"]["name"] == "tiny"
     json.dumps(result["summary"])  # plain Python values all the way down
+
+
+def test_an_arm_problem_plans_from_moveit_files_and_repeats():
+    panda = PROBLEMS / "arms" / "panda"
+    problem = amp.load_arm_problem(str(panda / "panda.urdf"), str(panda / "panda.srdf"),
+                                   str(panda / "scenes" / "box" / "scene0001.yaml"),
+                                   str(panda / "scenes" / "box" / "request0001.yaml"))
+    assert problem.dimension == 7
+    same = amp.load_problem(str(PROBLEMS / "panda-box.yaml"))
+    assert same.start == pytest.approx(problem.start) and same.goal == pytest.approx(problem.goal)
+    record, path = amp.plan(problem, planner="rrt-connect", seed=2, time_limit=30.0)
+    assert record["status"] == "solved"
+    assert list(path[0]) == pytest.approx(problem.start)
+    assert list(path[-1]) == pytest.approx(problem.goal)
+    again, path2 = amp.plan(problem, planner="rrt-connect", seed=2, time_limit=30.0)
+    assert [list(s) for s in path2] == [list(s) for s in path]
+    with pytest.raises(amp.Error, match="no-such-request.yaml"):
+        amp.load_arm_problem(str(panda / "panda.urdf"), str(panda / "panda.srdf"),
+                             str(panda / "scenes" / "box" / "scene0001.yaml"),
+                             str(PROBLEMS / "arms" / "no-such-request.yaml"))

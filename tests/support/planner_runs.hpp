@@ -66,16 +66,19 @@ inline std::size_t random_node_limit(const std::string& planner, const core::Par
   return static_cast<std::size_t>(training) + rng.uniform_index(2);
 }
 
-// One planner run and its wall time, measured around execute_run as a caller sees it.
+// One planner run and its wall and CPU times, measured around execute_run as a caller sees it.
 struct TimedRun {
   roadmap::RunOutcome out;
   double wall_s = -1.0;  // < 0: not run
+  double cpu_s = -1.0;   // this thread's CPU time: what the limit check uses (support/time_allowance.hpp)
 };
 inline TimedRun timed_run(const world::Problem& p, const std::string& planner, const core::ParamMap& params,
                           std::uint64_t seed, double time_limit_s, std::size_t node_limit) {
   TimedRun r;
   const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_seconds();
   r.out = roadmap::execute_run(p, planner, params, seed, time_limit_s, node_limit);
+  r.cpu_s = thread_cpu_seconds() - cpu0;
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.out.roadmap.reset();  // thousands of runs are kept for the thread comparison
   return r;
@@ -176,7 +179,7 @@ void run_shard(const std::string& name, const std::vector<Case>& cases, ExpectSo
     EXPECT_TRUE(status == core::PlanStatus::kSolved || status == core::PlanStatus::kTimeout ||
                 status == core::PlanStatus::kNodeLimit || status == core::PlanStatus::kUnsolvable)
         << core::to_string(status) << " " << rec.message << "\n" << c.describe();
-    EXPECT_LE(r.wall_s, c.time_limit_s + time_allowance(c.time_limit_s)) << core::to_string(status) << "\n" << c.describe();
+    EXPECT_LE(r.cpu_s, c.time_limit_s + time_allowance(c.time_limit_s)) << core::to_string(status) << "\n" << c.describe();
     EXPECT_LE(rec.nodes, c.node_limit) << core::to_string(status) << "\n" << c.describe();
     if (status == core::PlanStatus::kSolved) {
       expect_solved(c, r);

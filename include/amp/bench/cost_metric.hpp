@@ -34,4 +34,23 @@ MetricSample metric_sample(const core::RunRecord& r, std::string_view name);
 // How headings name the metric: "CD calls" for cd_calls, otherwise its name.
 std::string metric_label(std::string_view name);
 
+// Which way a metric improves. The tests between methods do not care, but every "best" of the
+// summary and the report does: a method that solves 4 % of its worlds is not the best one.
+enum class CostDirection { kLower, kHigher };
+
+// The direction a metric has unless the experiment says otherwise (`cost_direction:`): higher for
+// path_clearance and for an extra whose name has a word (split at '_', '.', '-') saying what was
+// achieved (solved, success, successes, reached, arrived, clearance, coverage: solved_fraction,
+// queries_solved, min_clearance, ...); lower for every other name (cd_calls, wall_time_s, steps_mean,
+// path_length, lp_successes, which counts work, ...).
+CostDirection default_cost_direction(std::string_view name);
+
+// "higher" or "lower", as summary.json and experiment files write it.
+std::string_view to_string(CostDirection d);
+// Throws ParameterError for a word other than "higher" or "lower".
+CostDirection parse_cost_direction(std::string_view word);
+
+// True when a is strictly better than b under d (ties keep the earlier method).
+inline bool better(CostDirection d, double a, double b) { return d == CostDirection::kHigher ? a > b : a < b; }
+
 }  // namespace amp::bench

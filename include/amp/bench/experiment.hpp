@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "amp/bench/cost_metric.hpp"
 #include "amp/core/run_record.hpp"
 #include "amp/core/parameters.hpp"
 #include "amp/world/problem.hpp"
@@ -32,6 +34,9 @@ struct ExperimentProblem {
   std::string label;  // the problem's name (unique in the experiment)
   std::filesystem::path file;
   std::shared_ptr<const world::Problem> problem;  // loaded once, shared by every trial
+  // Further files the problem is read from (an arm's scene beside its request: `file`), which the
+  // experiment's fingerprint covers too.
+  std::vector<std::filesystem::path> inputs;
 };
 
 // Problems x planner configurations x runs (docs/experiment-format.md).
@@ -41,13 +46,18 @@ struct Experiment {
   std::uint64_t seed = 1;  // master seed
   int runs = 50;
   double time_limit_s = 30.0;
-  std::size_t node_limit = 50000;
+  // Not given: each run gets its problem's defaults.node_limit, else its planner's default
+  // (roadmap::resolve_node_limit).
+  std::optional<std::size_t> node_limit;
   // Common random numbers: run i of every planner configuration on a problem gets the same seed, so
   // that planners which spend their first random numbers alike (UAS's training roadmap under each
   // clustering method) can be compared run by run (paired tests). Off: each configuration its own.
   bool common_seeds = false;
   // The metric the tests and the report's cost charts use (`cost:`; bench/cost_metric.hpp).
   std::string cost = "cd_calls";
+  // Which values of the cost are better (`cost_direction:`, else default_cost_direction(cost)). It
+  // changes no run, only what the summary and the report call best, so it is not in the fingerprint.
+  CostDirection cost_direction = CostDirection::kLower;
   std::vector<ExperimentProblem> problems;
   std::vector<PlannerConfig> planners;
   // Hash of everything that decides the results (not of the file's layout or comments): shards and

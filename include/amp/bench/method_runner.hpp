@@ -2,6 +2,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,11 @@ struct MethodRun {
 
 // One run of `method` as `amp bench` does it: roadmap::execute_run for a planner,
 // nav::execute_navigation for a navigation method, with the same seed, time limit and cancel flag
-// (navigators have no node limit). Errors propagate as those two functions throw them.
+// (navigators have no node limit; a planner's is roadmap::resolve_node_limit(node_limit, ...)).
+// Errors propagate as those two functions throw them.
 MethodRun run_method(const world::Problem& problem, MethodKind kind, const std::string& method,
-                     const core::ParamMap& params, std::uint64_t seed, double time_limit_s, std::size_t node_limit,
+                     const core::ParamMap& params, std::uint64_t seed, double time_limit_s,
+                     std::optional<std::size_t> node_limit,
                      const std::atomic<bool>* cancel);
 
 }  // namespace amp::bench

@@ -18,7 +18,8 @@ namespace amp::bench {
 // creates), so that Planner Arena and OMPL's scripts read AMP's results:
 //  - `experiments`: one row per problem (OMPL's experiment is one problem), name = problem label,
 //    setup = the problem file's text, seed = the master seed, runcount = runs per planner, plus the
-//    columns amp_experiment, experiment_file, fingerprint, problem_file, node_limit, threads;
+//    columns amp_experiment, experiment_file, fingerprint, problem_file, node_limit (when the
+//    experiment sets one), threads;
 //  - `plannerConfigs`: one row per configuration, "geometric_<label>", settings = its parameters;
 //  - `runs`: OMPL's standard properties (time, status, solved, solution length, graph states, ...),
 //    AMP's record fields, param_<name> per drawn parameter and the planner's extras, columns being

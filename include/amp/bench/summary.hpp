@@ -38,13 +38,15 @@ using ExperimentMetrics = std::vector<std::vector<GroupMetrics>>;
 
 ExperimentMetrics empty_metrics(const Experiment& e);
 
-// summary.json: per problem x planner, n, solved %, statuses, and for CD calls, time, nodes and path
-// length: mean, std, CV, median, quartiles, min, max and a histogram; the same for every extra metric
-// under "metrics", and for a cost other than CD calls under "cost"; per problem, the tests between
-// its planners on the experiment's cost: Brown-Forsythe, one-way ANOVA, Welch, Kruskal-Wallis, REGWQ
-// (skipped, saying why, when some run lacks the cost metric). Runs that end at a limit enter the
-// cost statistics with the cost they had spent (censored at the limit, as the run-cost paper treats
-// them); path length uses solved runs only.
+// summary.json: the experiment's cost_direction ("lower" or "higher": which values of the cost are
+// better); per problem x planner, n, solved %, statuses ("kind": "navigation" for a navigation
+// method), and for CD calls, time, nodes and path length: mean, std, CV, median, quartiles, min, max
+// and a histogram; the same for every extra metric under "metrics", and for a cost other than CD
+// calls under "cost"; per problem, "best": the method with the best mean cost in that direction,
+// and the tests between its planners on the experiment's cost: Brown-Forsythe, one-way ANOVA,
+// Welch, Kruskal-Wallis, REGWQ (skipped, saying why, when some run lacks the cost metric). Runs that
+// end at a limit enter the cost statistics with the cost they had spent (censored at the limit, as
+// the run-cost paper treats them); path length uses solved runs only.
 nlohmann::json summarize(const Experiment& e, const ExperimentMetrics& metrics, double alpha = 0.01);
 
 }  // namespace amp::bench

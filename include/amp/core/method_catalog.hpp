@@ -20,7 +20,8 @@ struct MethodInfo {
   std::vector<ParamSpec> params;
 };
 
-template <class Method>
+// `Info` is MethodInfo or a struct extending it with what one family of methods declares more.
+template <class Method, class Info = MethodInfo>
 class MethodCatalog {
  public:
   using Factory = std::function<std::unique_ptr<Method>(const Params&)>;
@@ -29,7 +30,7 @@ class MethodCatalog {
   explicit MethodCatalog(std::string kind = "method") : kind_(std::move(kind)) {}
 
   // Throws std::logic_error for a duplicate name (a programming error).
-  void add(MethodInfo info, Factory factory) {
+  void add(Info info, Factory factory) {
     std::string name = info.name;
     if (!entries_.emplace(name, Entry{std::move(info), std::move(factory)}).second) {
       throw std::logic_error(kind_ + " '" + name + "' registered twice");
@@ -41,7 +42,7 @@ class MethodCatalog {
     return e.factory(Params(name, e.info.params, params));
   }
   // Throws ParameterError for an unknown name.
-  const MethodInfo& info(const std::string& name) const { return entry(name).info; }
+  const Info& info(const std::string& name) const { return entry(name).info; }
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
   // Sorted names.
   std::vector<std::string> names() const {
@@ -52,7 +53,7 @@ class MethodCatalog {
 
  private:
   struct Entry {
-    MethodInfo info;
+    Info info;
     Factory factory;
   };
   const Entry& entry(const std::string& name) const {

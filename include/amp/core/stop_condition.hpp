@@ -6,6 +6,15 @@
 
 namespace amp::core {
 
+// Where a StopCondition reads the time, when not from the steady clock: seconds since the run began.
+// Tests give a clock that advances per read, so that a run trips after a known number of polls
+// however busy the machine is (tests/roadmap/stop_mechanism_test.cpp).
+class TimeSource {
+ public:
+  virtual ~TimeSource() = default;
+  virtual double seconds_since_start() const = 0;
+};
+
 // Why a planner was told to stop. Checked once per planner iteration, so it must be cheap.
 enum class StopReason { kNone, kTimeLimit, kNodeLimit, kCancelled };
 
@@ -19,6 +28,8 @@ class StopCondition {
   using Clock = std::chrono::steady_clock;
 
   StopCondition(double time_limit_s, std::size_t node_limit, const std::atomic<bool>* cancel = nullptr);
+  // The same, reading the time from `clock` (which must outlive the condition) instead.
+  StopCondition(double time_limit_s, std::size_t node_limit, const TimeSource& clock);
 
   // True when the planner must stop; `nodes` is the planner's current roadmap size.
   StopReason check(std::size_t nodes) const;
@@ -43,6 +54,7 @@ class StopCondition {
   double time_limit_s_;
   std::size_t node_limit_;
   const std::atomic<bool>* cancel_;
+  const TimeSource* clock_ = nullptr;  // null: the steady clock
   mutable bool timed_out_ = false;
 };
 

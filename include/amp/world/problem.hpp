@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,8 @@ inline constexpr std::size_t kNoNodeLimit = static_cast<std::size_t>(-1);
 struct ProblemDefaults {
   std::string planner = "prm";
   double time_limit_s = 30.0;
-  std::size_t node_limit = 20000;
+  // Not given: the planner's own default (roadmap::resolve_node_limit), as grid-dp needs none.
+  std::optional<std::size_t> node_limit;
   // Planner parameters this problem needs (e.g. the A* grid's `steps: 512` for the 6-DOF puzzle),
   // as written; they apply to every planner that declares them, unless the run sets them itself.
   std::map<std::string, std::string> params;

@@ -180,7 +180,8 @@ std::vector<Property> experiment_properties(const Experiment& e, std::size_t pro
   text("experiment_file", e.file.string());
   text("fingerprint", e.fingerprint);
   text("problem_file", e.problems.at(problem).file.string());
-  p.push_back({"node_limit", SqlType::kInteger, static_cast<std::int64_t>(e.node_limit)});
+  // Left out when not given: the limit is then the problem's or each planner's own.
+  if (e.node_limit) p.push_back({"node_limit", SqlType::kInteger, static_cast<std::int64_t>(*e.node_limit)});
   p.push_back({"threads", SqlType::kInteger, std::int64_t{info.threads}});
   return p;
 }

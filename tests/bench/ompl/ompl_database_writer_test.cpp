@@ -23,6 +23,7 @@ std::filesystem::path write_database(const std::filesystem::path& dir, const Exp
 }
 
 TEST(OmplDatabaseWriter, PassesOmplsCheckerWithRowCounts) {
+  AMP_SKIP_WITHOUT_OMPL_DB_CHECK();
   test::TempDir dir("db_check");
   const Experiment e = test::make_experiment(dir.path);
   const auto db = write_database(dir.path, e);

@@ -79,6 +79,7 @@ TEST(OmplLogWriter, OneLogPerProblemInOmplsFormat) {
 }
 
 TEST(OmplLogWriter, PassesOmplsParserAndGivesTheWritersDatabase) {
+  AMP_SKIP_WITHOUT_OMPL_DB_CHECK();
   test::TempDir dir("log_roundtrip");
   const Experiment e = test::make_experiment(dir.path);
   const auto files = write_logs(dir.path, e);
@@ -113,6 +114,7 @@ TEST(OmplLogWriter, PassesOmplsParserAndGivesTheWritersDatabase) {
 }
 
 TEST(OmplLogWriter, MissingTrialsGiveEmptySectionsAndLogs) {
+  AMP_SKIP_WITHOUT_OMPL_DB_CHECK();
   test::TempDir dir("log_missing");
   const Experiment e = test::make_experiment(dir.path);
   std::vector<std::filesystem::path> files;

@@ -1,0 +1,99 @@
+#pragma once
+// An arm (URDF + SRDF planning group) in a MoveIt scene: the Environment that `amp plan --urdf ...`
+// plans in. Collision checking is FCL on the links' collision geometry, as MoveIt does; self-
+// collision between every pair of links but the SRDF's disabled pairs and the scene's allowed ones.
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "amp/world/arm_kinematics.hpp"
+#include "amp/world/environment.hpp"
+#include "amp/world/moveit_files.hpp"
+#include "amp/world/spatial_world.hpp"
+
+namespace amp::world {
+
+namespace detail {
+struct ArmGeometry;  // FCL geometry of the links, built once, shared by every checker
+}
+
+// The robot side: kinematics, which pairs are checked, and the per-joint motion radii that bound
+// how far any robot point moves for a joint step (docs/arms.md, "Certification").
+class ArmRobot {
+ public:
+  // `geometry`: make_arm_geometry(kinematics.model()), shared by every problem of the robot.
+  // `disabled`: link pairs never checked (the SRDF's disabled_collisions and the scene's allowed
+  // pairs of two links). A pair naming a link the model lacks is ignored, as MoveIt ignores it.
+  ArmRobot(ArmKinematics kinematics, std::shared_ptr<const detail::ArmGeometry> geometry,
+           const std::vector<std::pair<std::string, std::string>>& disabled);
+
+  const ArmKinematics& kinematics() const { return kinematics_; }
+  const ArmModel& model() const { return kinematics_.model(); }
+  // Link pairs checked against each other (both with geometry, not disabled).
+  const std::vector<std::pair<int, int>>& self_pairs() const { return self_pairs_; }
+  // For group joint k: a bound on the distance from joint k's axis of any point of the links it
+  // moves (1 for a prismatic joint: the slide itself), mimic followers included.
+  const std::vector<double>& motion_radii() const { return motion_radii_; }
+  // Largest distance of a robot point from the root frame's origin, over all configurations.
+  double reach() const { return reach_; }
+  // Smallest side of any link solid's bounds (the Gaussian sampler's distance).
+  double min_diameter() const { return min_diameter_; }
+  const detail::ArmGeometry& geometry() const { return *geometry_; }
+  // Part index pairs (into geometry().parts) checked for self-collision.
+  const std::vector<std::pair<int, int>>& self_part_pairs() const { return self_part_pairs_; }
+
+ private:
+  ArmKinematics kinematics_;
+  std::vector<std::pair<int, int>> self_pairs_;
+  std::vector<std::pair<int, int>> self_part_pairs_;
+  std::vector<double> motion_radii_;
+  double reach_ = 0.0;
+  double min_diameter_ = 0.0;
+  std::shared_ptr<const detail::ArmGeometry> geometry_;
+};
+
+// Bounds a solid's points' distance from its parent frame's origin (exact for boxes and meshes).
+double solid_reach(const Solid& s);
+
+// The FCL geometry of every link's collision solids, with each mesh's convex hull: built once per
+// robot model (the hulls cost a tenth of a second for a Panda). Throws ParameterError when no link
+// has collision geometry.
+std::shared_ptr<const detail::ArmGeometry> make_arm_geometry(const ArmModel& model);
+
+class ArmEnvironment final : public Environment {
+ public:
+  // `object_ids[i]` names the collision object of scene solid i; `allowed` may pair such ids with
+  // link names (the scene's allowed_collision_matrix).
+  ArmEnvironment(std::shared_ptr<const SpatialWorld> scene, std::vector<std::string> object_ids,
+                 std::shared_ptr<const ArmRobot> robot, const AllowedCollisions& allowed);
+
+  int workspace_dimension() const override { return 3; }
+  std::unique_ptr<ValidityChecker> make_checker(core::Counters& counters) const override;
+  Eigen::AlignedBox3d workspace_bounds() const override { return scene_->bounds(); }
+  Outline obstacle_outline() const override;
+  Shapes2d robot_outline(const State& s) const override;
+  Eigen::Vector3d reference_point(const State& s) const override { return robot_->kinematics().tip_position(s); }
+  double robot_min_diameter() const override { return robot_->min_diameter(); }
+  double robot_radius() const override { return robot_->reach(); }
+
+  const SpatialWorld& scene() const { return *scene_; }
+  const std::vector<std::string>& object_ids() const { return object_ids_; }
+  const ArmRobot& robot() const { return *robot_; }
+  // Whether the scene allows object solid `object` to touch link `link`.
+  bool allowed(std::size_t object, int link) const;
+  // What a configuration collides with, in words: "links 'a' and 'b'" or "link 'a' and object
+  // 'id'"; empty when it is free.
+  std::string first_contact(const State& s) const;
+
+ private:
+  std::shared_ptr<const SpatialWorld> scene_;
+  std::vector<std::string> object_ids_;
+  std::shared_ptr<const ArmRobot> robot_;
+  std::vector<std::vector<bool>> allowed_;  // [object][link]
+  bool any_allowed_ = false;
+  mutable std::mutex make_mutex_;  // FCL objects write into shared geometry when made
+};
+
+}  // namespace amp::world

@@ -1,0 +1,55 @@
+#include "amp/world/arm_environment.hpp"
+
+#include "world/arm/arm_checker.hpp"
+#include "world/spatial/projection.hpp"
+
+namespace amp::world {
+
+ArmEnvironment::ArmEnvironment(std::shared_ptr<const SpatialWorld> scene, std::vector<std::string> object_ids,
+                               std::shared_ptr<const ArmRobot> robot, const AllowedCollisions& allowed)
+    : scene_(std::move(scene)), object_ids_(std::move(object_ids)), robot_(std::move(robot)) {
+  const auto& links = robot_->model().links();
+  allowed_.assign(object_ids_.size(), std::vector<bool>(links.size(), false));
+  for (std::size_t i = 0; i < object_ids_.size(); ++i) {
+    for (std::size_t l = 0; l < links.size(); ++l) {
+      allowed_[i][l] = !allowed.empty() && allowed.allowed(object_ids_[i], links[l].name);
+    }
+  }
+}
+
+bool ArmEnvironment::allowed(std::size_t object, int link) const {
+  return object < allowed_.size() && allowed_[object][static_cast<std::size_t>(link)];
+}
+
+std::unique_ptr<ValidityChecker> ArmEnvironment::make_checker(core::Counters& counters) const {
+  const std::lock_guard<std::mutex> lock(make_mutex_);
+  return std::make_unique<detail::ArmChecker>(*this, counters);
+}
+
+std::string ArmEnvironment::first_contact(const State& s) const {
+  core::Counters scratch;
+  std::unique_ptr<detail::ArmChecker> checker;
+  {
+    const std::lock_guard<std::mutex> lock(make_mutex_);
+    checker = std::make_unique<detail::ArmChecker>(*this, scratch);
+  }
+  return checker->first_contact(s);
+}
+
+Outline ArmEnvironment::obstacle_outline() const {
+  Outline outline;
+  for (const Solid& s : scene_->obstacles()) detail::project_solid(s, Eigen::Isometry3d::Identity(), true, outline.shapes);
+  return outline;
+}
+
+Shapes2d ArmEnvironment::robot_outline(const State& s) const {
+  std::vector<Eigen::Isometry3d> poses(robot_->kinematics().link_count());
+  robot_->kinematics().link_poses(s, poses.data());
+  Shapes2d out;
+  for (std::size_t l = 0; l < poses.size(); ++l) {
+    for (const Solid& solid : robot_->model().links()[l].collision) detail::project_solid(solid, poses[l], false, out);
+  }
+  return out;
+}
+
+}  // namespace amp::world
