@@ -15,6 +15,11 @@
 namespace amp::roadmap {
 
 namespace {
+// Trees of a failed leg up to this size are copied into the result's roadmap for drawing (~10 ms).
+constexpr std::size_t kMaxCopiedFailedTrees = 5000;
+}  // namespace
+
+namespace {
 
 // First reservation per tree; trees grow beyond it by doubling (a node limit of 10^9 must not
 // reserve 10^9 states, and most legs end long before their budget).
@@ -144,17 +149,18 @@ class RrtConnectRun {
       Meeting m;
       const bool solved = solve_leg(rng, m);
       if (solved) append_leg_path(m, result.path);
-      append_forest(solved ? &m : nullptr);
       if (!solved) {
         result.status = status_for(reason_);
         result.path.clear();
+        stop_leg_trees();
         break;
       }
+      append_forest(&m);
       ++legs_solved_;
     }
-    result.nodes = forest_->vertex_count();
-    result.edges = forest_->edge_count();
-    result.components = forest_->component_count();
+    result.nodes = forest_->vertex_count() + uncopied_.nodes;
+    result.edges = forest_->edge_count() + uncopied_.edges;
+    result.components = forest_->component_count() + uncopied_.components;
     result.extra["range"] = range_;
     result.extra["legs_solved"] = static_cast<double>(legs_solved_);
     result.extra["certify_refused"] = static_cast<double>(certify_refused_);
@@ -287,6 +293,20 @@ class RrtConnectRun {
     for (std::size_t v = m.goal; v != kNoNode; v = trees_[1].parent(v)) path.push_back(trees_[1].state(v));
   }
 
+  // The trees of the leg that did not connect: drawn (copied into the forest) while they are small;
+  // a run stopped by its time limit may hold millions of nodes, whose copy took 0.2 s past the
+  // limit for 40,000 (run_limits_test), so larger ones are only counted.
+  void stop_leg_trees() {
+    const std::size_t shared = leg_ > 0 ? 1 : 0;  // tree 0's root is the previous leg's goal root
+    if (trees_[0].size() + trees_[1].size() <= kMaxCopiedFailedTrees) {
+      append_forest(nullptr);
+      return;
+    }
+    uncopied_.nodes = trees_[0].size() + trees_[1].size() - shared;
+    uncopied_.edges = trees_[0].size() + trees_[1].size() - 2;
+    uncopied_.components = 2 - shared;
+  }
+
   // Adds the current leg's trees (and their meeting edge) to the forest; tree 0's root is the
   // previous leg's goal root.
   void append_forest(const Meeting* m) {
@@ -318,6 +338,9 @@ class RrtConnectRun {
   EdgeCertifier certifier_;
   Tree trees_[2];
   std::shared_ptr<Roadmap> forest_;
+  struct {
+    std::uint64_t nodes = 0, edges = 0, components = 0;
+  } uncopied_;  // the last leg's trees when too large to copy (stop_leg_trees)
   std::size_t leg_ = 0;
   VertexId goal_root_ = 0;  // forest id of the last appended leg's goal root
   core::StopReason reason_ = core::StopReason::kNone;
