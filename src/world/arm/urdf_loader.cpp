@@ -118,7 +118,7 @@ Solid collision_solid(const urdf::Collision& col, const std::string& where, Cont
       }
       case urdf::Geometry::MESH: {
         const auto& m = static_cast<const urdf::Mesh&>(*col.geometry);
-        const fs::path path = resolve_mesh(m.filename, where, c);
+        const fs::path path = resolve_mesh(m.filename, where, c).lexically_normal();
         auto& cached = c.meshes[path];
         // ROS reads meshes as assimp gives them, without turning a COLLADA Y-up file (geometric_shapes
         // ignores the up axis), hence UpAxis::kZ.

@@ -86,7 +86,10 @@ TriangleMesh load_mesh(const std::filesystem::path& file, UpAxis up) {
     throw FileError(file.string() + ": cannot read mesh: " + refusal);
   }
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  // Normalised first: assimp 5.2 fails with "File read error" on an OBJ path holding "../" after
+  // a folder ("a/b/../../../x.obj"), as an experiment file beside the repository names the shared data.
+  const aiScene* scene =
+      importer.ReadFile(file.lexically_normal().string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr) {
     throw FileError(file.string() + ": cannot read mesh: " + importer.GetErrorString());
   }
