@@ -82,6 +82,20 @@ TEST_F(ArmBadInput, UrdfThatIsNotXml) {
   std::cout << "[ message  ] " << m << "\n";
 }
 
+// urdfdom puts a value it cannot read into a message it then uses as a printf format: a '%' in the
+// file crashed the parse (tests/fuzz found it). The error must be the usual one line, and a file whose
+// names hold '%' must still load.
+TEST_F(ArmBadInput, UrdfWithPrintfDirectivesInABadValue) {
+  edit("two_link.urdf", "<origin xyz=\"0 0 0.1\"", "<origin xyz=\"%s%s%s%s%s%s%s%s%n 0 0.1\"");
+  const std::string m = error({path("two_link.urdf"), "not a valid URDF", "%s%s"});
+  std::cout << "[ message  ] " << m << "\n";
+}
+
+TEST_F(ArmBadInput, UrdfWithPercentInANameLoads) {
+  edit("two_link.urdf", "<robot name=\"two_link\"", "<robot name=\"two%s_link%n\"");
+  EXPECT_NO_THROW(load_arm_problem(files()));
+}
+
 TEST_F(ArmBadInput, GroupMissingFromTheSrdf) {
   edit("request.yaml", "group_name: arm_chain", "group_name: legs");
   const std::string m = error({path("two_link.srdf"), "'legs'"});
