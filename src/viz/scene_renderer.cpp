@@ -47,8 +47,19 @@ std::vector<State> spread_along(const core::Space& space, const std::vector<Stat
   return out;
 }
 
+// Which of a world's views a panel draws: the top view (x, y), or a 3-D world's front view (x, z).
+enum class Panel { kTop, kFront };
+
+Eigen::Vector2d seen(Panel panel, const Eigen::Vector3d& p) {
+  return panel == Panel::kTop ? Eigen::Vector2d(p.x(), p.y()) : Eigen::Vector2d(p.x(), p.z());
+}
+
+world::Shapes2d robot_in(Panel panel, const world::Environment& env, const State& s) {
+  return panel == Panel::kTop ? env.robot_outline(s) : env.robot_front_outline(s);
+}
+
 // The reference point's trace, with states interpolated at the space resolution so arcs look smooth.
-std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<State>& path) {
+std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<State>& path, Panel panel) {
   std::vector<Eigen::Vector2d> pts;
   State s;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -58,10 +69,10 @@ std::vector<Eigen::Vector2d> trace(const world::Problem& p, const std::vector<St
     const int n = steps > 1.0 ? static_cast<int>(std::min(steps, 200.0)) : 1;
     for (int k = 0; k < n; ++k) {
       p.space->interpolate(path[i], path[i + 1], static_cast<double>(k) / n, s);
-      pts.push_back(p.environment->reference_point(s).head<2>());
+      pts.push_back(seen(panel, p.environment->reference_point(s)));
     }
   }
-  if (!path.empty()) pts.push_back(p.environment->reference_point(path.back()).head<2>());
+  if (!path.empty()) pts.push_back(seen(panel, p.environment->reference_point(path.back())));
   return pts;
 }
 
@@ -88,78 +99,113 @@ void legend(SvgCanvas& c, bool has_path, bool has_roadmap, bool has_regions, dou
 
 }  // namespace
 
-std::string render_scene(const world::Problem& problem, const SceneOptions& options) {
-  const world::Environment& env = *problem.environment;
-  const Eigen::AlignedBox3d b3 = env.workspace_bounds();
-  const Eigen::AlignedBox2d bounds(b3.min().head<2>(), b3.max().head<2>());
-  SvgCanvas c(bounds, options.width_px, 28, kFooterPx);
+namespace {
 
-  const std::string title = options.title.empty() ? problem.name : options.title;
-  const std::string subtitle = std::string(problem.space->kind()) +
-                               (env.workspace_dimension() == 3 ? ", 3-D world seen from above" : "");
-  c.text_px(28, 19, title + " (" + subtitle + ")", 15, kText, "start", true);
-
-  c.begin_group("workspace");
-  c.rect(bounds, Style{kWorkspaceFill, kBoundsStroke, 1.5});
+void draw_roadmap(SvgCanvas& c, const world::Environment& env, const RoadmapDrawing& rm, Panel panel) {
+  c.begin_group("roadmap");
+  std::vector<Eigen::Vector2d> pts;
+  pts.reserve(rm.vertices.size());
+  for (const auto& v : rm.vertices) pts.push_back(seen(panel, env.reference_point(v)));
+  for (const auto& [a, b] : rm.edges) c.line(pts[a], pts[b], Style{"none", kRoadmapEdge, 0.7});
+  const bool labelled = rm.labels.size() == pts.size();
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (labelled) {
+      c.dot(pts[i], 3.2, Style{cluster_color(rm.labels[i]), "#ffffff", 0.6, 0.95});
+    } else {
+      c.dot(pts[i], 1.6, Style{kRoadmapNode, "none", 0, 0.9});
+    }
+  }
   c.end_group();
+}
 
-  if (options.roadmap != nullptr) {
-    c.begin_group("roadmap");
-    const auto& rm = *options.roadmap;
-    std::vector<Eigen::Vector2d> pts;
-    pts.reserve(rm.vertices.size());
-    for (const auto& v : rm.vertices) pts.push_back(env.reference_point(v).head<2>());
-    for (const auto& [a, b] : rm.edges) c.line(pts[a], pts[b], Style{"none", kRoadmapEdge, 0.7});
-    const bool labelled = rm.labels.size() == pts.size();
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (labelled) {
-        c.dot(pts[i], 3.2, Style{cluster_color(rm.labels[i]), "#ffffff", 0.6, 0.95});
-      } else {
-        c.dot(pts[i], 1.6, Style{kRoadmapNode, "none", 0, 0.9});
-      }
-    }
-    c.end_group();
+void draw_regions(SvgCanvas& c, const std::vector<RegionDrawing>& regions) {
+  c.begin_group("regions");
+  for (const RegionDrawing& r : regions) {
+    c.rect(r.box, Style{cluster_color(r.cluster), "none", 0, 0.10});
+    c.rect(r.box, Style{"none", cluster_color(r.cluster), 2.0, 0.9});
   }
-
-  const world::Outline outline = env.obstacle_outline();
-  const double obstacle_opacity = env.workspace_dimension() == 3 ? kTopViewOpacity : 1.0;
-  draw_obstacles(c, outline, obstacle_opacity);
-
-  if (options.regions != nullptr) {
-    c.begin_group("regions");
-    for (const RegionDrawing& r : *options.regions) {
-      c.rect(r.box, Style{cluster_color(r.cluster), "none", 0, 0.10});
-      c.rect(r.box, Style{"none", cluster_color(r.cluster), 2.0, 0.9});
-    }
-    // Labels at the boxes' top-left corners, stepped down by index: overlapping boxes often share
-    // a corner (both touch the world's border).
-    for (std::size_t i = 0; i < options.regions->size(); ++i) {
-      const RegionDrawing& r = (*options.regions)[i];
-      const Eigen::Vector2d corner = c.to_px(Eigen::Vector2d(r.box.min().x(), r.box.max().y()));
-      c.text_px(corner.x() + 4, corner.y() + 14 + 14 * static_cast<double>(i), r.label, 12, cluster_color(r.cluster),
-                "start", true);
-    }
-    c.end_group();
+  // Labels at the boxes' top-left corners, stepped down by index: overlapping boxes often share
+  // a corner (both touch the world's border).
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const RegionDrawing& r = regions[i];
+    const Eigen::Vector2d corner = c.to_px(Eigen::Vector2d(r.box.min().x(), r.box.max().y()));
+    c.text_px(corner.x() + 4, corner.y() + 14 + 14 * static_cast<double>(i), r.label, 12, cluster_color(r.cluster),
+              "start", true);
   }
+  c.end_group();
+}
 
+void draw_robots(SvgCanvas& c, const world::Problem& problem, const SceneOptions& options, Panel panel) {
+  const world::Environment& env = *problem.environment;
   if (options.path != nullptr && !options.path->empty()) {
     c.begin_group("path");
     for (const State& s : spread_along(*problem.space, *options.path, options.footprints)) {
-      draw_shapes(c, env.robot_outline(s), Style{kPathColor, kPathColor, 0.6, 0.18});
+      draw_shapes(c, robot_in(panel, env, s), Style{kPathColor, kPathColor, 0.6, 0.18});
     }
-    c.polyline(trace(problem, *options.path), Style{"none", kPathColor, 2.2, 0.95, true});
+    c.polyline(trace(problem, *options.path, panel), Style{"none", kPathColor, 2.2, 0.95, true});
     c.end_group();
   }
-
   c.begin_group("start-goal");
-  draw_shapes(c, env.robot_outline(problem.start()), Style{kStartColor, "#0f5c45", 1.2, 0.8});
-  draw_shapes(c, env.robot_outline(problem.goal()), Style{kGoalColor, "#8a3d00", 1.2, 0.8});
+  draw_shapes(c, robot_in(panel, env, problem.start()), Style{kStartColor, "#0f5c45", 1.2, 0.8});
+  draw_shapes(c, robot_in(panel, env, problem.goal()), Style{kGoalColor, "#8a3d00", 1.2, 0.8});
   for (std::size_t i = 1; i + 1 < problem.seeds.size(); ++i) {
-    draw_shapes(c, env.robot_outline(problem.seeds[i]), Style{"#7570b3", "#3f3a80", 1.2, 0.8});
+    draw_shapes(c, robot_in(panel, env, problem.seeds[i]), Style{"#7570b3", "#3f3a80", 1.2, 0.8});
   }
-  c.dot(env.reference_point(problem.start()).head<2>(), 3.0, Style{"#ffffff", "#0f5c45", 1.5});
-  c.dot(env.reference_point(problem.goal()).head<2>(), 3.0, Style{"#ffffff", "#8a3d00", 1.5});
+  c.dot(seen(panel, env.reference_point(problem.start())), 3.0, Style{"#ffffff", "#0f5c45", 1.5});
+  c.dot(seen(panel, env.reference_point(problem.goal())), 3.0, Style{"#ffffff", "#8a3d00", 1.5});
   c.end_group();
+}
+
+// One view of the problem in the canvas's world coordinates: workspace, roadmap, obstacles,
+// regions (top view only: they are boxes in (x, y)), path, start and goal.
+void draw_panel(SvgCanvas& c, const world::Problem& problem, const SceneOptions& options, Panel panel,
+                const Eigen::AlignedBox2d& bounds, const world::Outline& outline, double obstacle_opacity) {
+  const world::Environment& env = *problem.environment;
+  c.begin_group("workspace");
+  c.rect(bounds, Style{kWorkspaceFill, kBoundsStroke, 1.5});
+  c.end_group();
+  if (options.roadmap != nullptr) draw_roadmap(c, env, *options.roadmap, panel);
+  draw_obstacles(c, outline, obstacle_opacity);
+  if (panel == Panel::kTop && options.regions != nullptr) draw_regions(c, *options.regions);
+  draw_robots(c, problem, options, panel);
+}
+
+}  // namespace
+
+std::string render_scene(const world::Problem& problem, const SceneOptions& options) {
+  const world::Environment& env = *problem.environment;
+  const Eigen::AlignedBox3d b3 = env.workspace_bounds();
+  const Eigen::AlignedBox2d top(b3.min().head<2>(), b3.max().head<2>());
+  const bool front = env.has_front_view();
+  // Two views share one canvas and one scale: the front view (x, z) stands right of the top view,
+  // a gap between them, and the canvas spans both heights.
+  const Eigen::AlignedBox2d side(Eigen::Vector2d(b3.min().x(), b3.min().z()), Eigen::Vector2d(b3.max().x(), b3.max().z()));
+  const double gap = 0.08 * top.sizes().x();
+  Eigen::AlignedBox2d canvas_box = top;
+  if (front) {
+    canvas_box.extend(Eigen::Vector2d(b3.max().x() + gap + side.sizes().x(), side.min().y()));
+    canvas_box.extend(Eigen::Vector2d(b3.max().x(), side.max().y()));
+  }
+  SvgCanvas c(canvas_box, options.width_px, front ? 44 : 28, kFooterPx);
+
+  const std::string title = options.title.empty() ? problem.name : options.title;
+  const std::string subtitle = std::string(problem.space->kind()) +
+                               (front ? ", 3-D world: top view (x, y), front view (x, z)" : "");
+  c.text_px(28, 19, title + " (" + subtitle + ")", 15, kText, "start", true);
+
+  const double obstacle_opacity = env.workspace_dimension() == 3 ? kTopViewOpacity : 1.0;
+  const world::Outline outline = env.obstacle_outline();
+  draw_panel(c, problem, options, Panel::kTop, top, outline, obstacle_opacity);
+  if (front) {
+    const double shift_px = (top.sizes().x() + gap) * c.scale();
+    const Eigen::Vector2d top_left = c.to_px(Eigen::Vector2d(top.min().x(), top.max().y()));
+    const Eigen::Vector2d side_left = c.to_px(Eigen::Vector2d(side.min().x(), side.max().y()));
+    c.text_px(top_left.x(), top_left.y() - 6, "top view: x right, y up", 12, kText);
+    c.text_px(side_left.x() + shift_px, side_left.y() - 6, "front view: x right, z up", 12, kText);
+    c.begin_shifted_group("front-view", shift_px, 0.0);
+    draw_panel(c, problem, options, Panel::kFront, side, env.obstacle_front_outline(), obstacle_opacity);
+    c.end_group();
+  }
 
   const bool has_unknown = outline.grid != nullptr && outline.grid->count(world::CellState::kUnknown) > 0;
   legend(c, options.path != nullptr && !options.path->empty(), options.roadmap != nullptr,

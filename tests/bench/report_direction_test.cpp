@@ -48,7 +48,7 @@ class ReportDirection : public ::testing::Test {
     e.cost_direction = direction;
     const fs::path walls = fs::path(AMP_SOURCE_DIR) / "problems" / "walls.yaml";
     auto problem = std::make_shared<world::Problem>(world::load_problem(walls));
-    e.problems.push_back({problem->name, problem->file, problem});
+    e.problems.push_back({problem->name, problem->file, problem, {}});
     e.planners.push_back({"few", "prm", {{"k", 10}}, {}});
     e.planners.push_back({"many", "prm", {{"k", 20}}, {}});
     return e;

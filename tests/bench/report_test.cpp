@@ -43,7 +43,7 @@ class ReportTest : public ::testing::Test {
     e.node_limit = 20000;
     e.fingerprint = "0123abcd";
     auto problem = std::make_shared<world::Problem>(world::load_problem(fs::path(AMP_SOURCE_DIR) / "problems/walls.yaml"));
-    e.problems.push_back({problem->name, problem->file, problem});
+    e.problems.push_back({problem->name, problem->file, problem, {}});
     for (std::size_t i = 0; i < labels.size(); ++i) {
       e.planners.push_back({labels[i], "prm", {{"k", 10 * static_cast<int>(i + 1)}}, {}});
     }

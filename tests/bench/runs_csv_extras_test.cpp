@@ -19,7 +19,7 @@ TEST(RunsCsvExtras, ReadBackBitForBit) {
   Experiment e;
   e.name = "extras";
   e.runs = 2;
-  e.problems.push_back({"Office", "office.yaml", nullptr});
+  e.problems.push_back({"Office", "office.yaml", nullptr, {}});
   e.planners.push_back({"pgcs-small", "pgcs", {}, {}, MethodKind::kNavigator});
   const std::map<std::string, double> extras = {{"replans", 17.0},
                                                 {"replans_median", 2.5},

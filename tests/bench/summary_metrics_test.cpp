@@ -19,7 +19,7 @@ Experiment two_methods(const std::string& cost) {
   e.name = "hand-made";
   e.runs = 4;
   e.cost = cost;
-  e.problems.push_back({"P", "p.yaml", nullptr});
+  e.problems.push_back({"P", "p.yaml", nullptr, {}});
   e.planners.push_back({"a", "prm", {}, {}, MethodKind::kPlanner});
   e.planners.push_back({"b", "pgcs", {}, {}, MethodKind::kNavigator});
   return e;

@@ -74,6 +74,9 @@ class ArmEnvironment final : public Environment {
   Eigen::AlignedBox3d workspace_bounds() const override { return scene_->bounds(); }
   Outline obstacle_outline() const override;
   Shapes2d robot_outline(const State& s) const override;
+  bool has_front_view() const override { return true; }
+  Outline obstacle_front_outline() const override;
+  Shapes2d robot_front_outline(const State& s) const override;
   Eigen::Vector3d reference_point(const State& s) const override { return robot_->kinematics().tip_position(s); }
   double robot_min_diameter() const override { return robot_->min_diameter(); }
   double robot_radius() const override { return robot_->reach(); }
@@ -93,6 +96,9 @@ class ArmEnvironment final : public Environment {
   std::shared_ptr<const ArmRobot> robot_;
   std::vector<std::vector<bool>> allowed_;  // [object][link]
   bool any_allowed_ = false;
+  // The views: solids placed by `view` (identity: top; the front view's frame), projected.
+  Outline obstacles_seen_from(const Eigen::Isometry3d& view) const;
+  Shapes2d robot_seen_from(const Eigen::Isometry3d& view, const State& s) const;
   mutable std::mutex make_mutex_;  // FCL objects write into shared geometry when made
 };
 

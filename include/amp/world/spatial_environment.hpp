@@ -23,6 +23,10 @@ class SpatialEnvironment final : public Environment {
   Outline obstacle_outline() const override;
   // Top view of the robot: meshes as one convex hull each (cheap enough to draw along paths).
   Shapes2d robot_outline(const State& s) const override;
+  // The same, seen from the front (WorldDrawing).
+  bool has_front_view() const override { return true; }
+  Outline obstacle_front_outline() const override;
+  Shapes2d robot_front_outline(const State& s) const override;
   Eigen::Vector3d reference_point(const State& s) const override { return robot_.reference_point(s); }
   double robot_min_diameter() const override { return robot_.min_diameter(); }
   double robot_radius() const override { return robot_.radius(); }
@@ -35,6 +39,9 @@ class SpatialEnvironment final : public Environment {
   std::shared_ptr<const SpatialWorld> world_;
   SpatialRobot robot_;
   SpatialBoundsCheck bounds_check_;
+  // The views: solids placed by `view` (identity: top; detail::front_view_frame(): front), projected.
+  Outline obstacles_seen_from(const Eigen::Isometry3d& view) const;
+  Shapes2d robot_seen_from(const Eigen::Isometry3d& view, const State& s) const;
   // FCL's CollisionObject constructor writes into the shared geometry (its local AABB), so
   // checkers are made one at a time.
   mutable std::mutex make_mutex_;

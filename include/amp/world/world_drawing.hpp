@@ -21,6 +21,12 @@ class WorldDrawing {
   virtual Outline obstacle_outline() const = 0;
   // The robot's footprint at state s, world frame (3-D: top view).
   virtual Shapes2d robot_outline(const State& s) const = 0;
+  // A second, front view of a 3-D world (orthographic, seen along +y: x to the right, z up), beside
+  // the top view, so that heights read: an arm above a table, a shelf's boards. 2-D worlds have none.
+  virtual bool has_front_view() const { return false; }
+  // The obstacles and the robot as the front view draws them, in its (x, z) coordinates.
+  virtual Outline obstacle_front_outline() const { return {}; }
+  virtual Shapes2d robot_front_outline(const State& /*s*/) const { return {}; }
 };
 
 }  // namespace amp::world

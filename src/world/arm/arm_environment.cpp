@@ -36,20 +36,25 @@ std::string ArmEnvironment::first_contact(const State& s) const {
   return checker->first_contact(s);
 }
 
-Outline ArmEnvironment::obstacle_outline() const {
+Outline ArmEnvironment::obstacles_seen_from(const Eigen::Isometry3d& view) const {
   Outline outline;
-  for (const Solid& s : scene_->obstacles()) detail::project_solid(s, Eigen::Isometry3d::Identity(), true, outline.shapes);
+  for (const Solid& s : scene_->obstacles()) detail::project_solid(s, view, true, outline.shapes);
   return outline;
 }
 
-Shapes2d ArmEnvironment::robot_outline(const State& s) const {
+Shapes2d ArmEnvironment::robot_seen_from(const Eigen::Isometry3d& view, const State& s) const {
   std::vector<Eigen::Isometry3d> poses(robot_->kinematics().link_count());
   robot_->kinematics().link_poses(s, poses.data());
   Shapes2d out;
   for (std::size_t l = 0; l < poses.size(); ++l) {
-    for (const Solid& solid : robot_->model().links()[l].collision) detail::project_solid(solid, poses[l], false, out);
+    for (const Solid& solid : robot_->model().links()[l].collision) detail::project_solid(solid, view * poses[l], false, out);
   }
   return out;
 }
+
+Outline ArmEnvironment::obstacle_outline() const { return obstacles_seen_from(Eigen::Isometry3d::Identity()); }
+Shapes2d ArmEnvironment::robot_outline(const State& s) const { return robot_seen_from(Eigen::Isometry3d::Identity(), s); }
+Outline ArmEnvironment::obstacle_front_outline() const { return obstacles_seen_from(detail::front_view_frame()); }
+Shapes2d ArmEnvironment::robot_front_outline(const State& s) const { return robot_seen_from(detail::front_view_frame(), s); }
 
 }  // namespace amp::world

@@ -222,6 +222,33 @@ void add_subtree(const urdf::Link& link, int parent_joint, std::vector<ArmLink>&
   }
 }
 
+// The offset of the first byte that does not begin a well-formed UTF-8 sequence, or npos. urdfdom
+// parses with TinyXML 2.6, which steps over a multi-byte character by its lead byte's length
+// without looking for the end of the text: a lead byte near the end made it read past the buffer
+// (tests/fuzz found it). URDF files are UTF-8; anything else is refused before TinyXML sees it.
+std::size_t first_invalid_utf8(const std::string& text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char lead = byte(i);
+    std::size_t length = 1;
+    if (lead >= 0xC2 && lead <= 0xDF) {
+      length = 2;
+    } else if (lead >= 0xE0 && lead <= 0xEF) {
+      length = 3;
+    } else if (lead >= 0xF0 && lead <= 0xF4) {
+      length = 4;
+    } else if (lead >= 0x80) {
+      return i;  // a continuation byte without a lead, or a lead no UTF-8 character has
+    }
+    if (i + length > text.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      if ((byte(i + k) & 0xC0) != 0x80) return i;
+    }
+    i += length;
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 ArmModel::ArmModel(std::string name, std::vector<ArmLink> links, std::vector<ArmJoint> joints)
@@ -252,6 +279,9 @@ bool ArmModel::in_subtree(int ancestor, int descendant) const {
 
 ArmModel parse_urdf(const std::string& xml, const std::string& label, const fs::path& base_dir,
                     const UrdfOptions& options) {
+  if (const std::size_t bad = first_invalid_utf8(xml); bad != std::string::npos) {
+    throw FileError(label + ": not a valid URDF: not UTF-8 text (byte " + std::to_string(bad) + ")");
+  }
   std::string error;
   const urdf::ModelInterfaceSharedPtr model = parse_with_urdfdom(xml, error);
   if (!model) throw FileError(label + ": not a valid URDF: " + error);

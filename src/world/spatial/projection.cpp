@@ -132,6 +132,13 @@ void project_slab_surface(const TriangleMesh& mesh, double z0, double z1, Shapes
   }
 }
 
+Eigen::Isometry3d front_view_frame() {
+  Eigen::Isometry3d view = Eigen::Isometry3d::Identity();
+  // A rotation (determinant 1) about x by -90 degrees: rows give x' = x, y' = z, z' = -y.
+  view.linear() << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  return view;
+}
+
 void project_solid(const Solid& solid, const Eigen::Isometry3d& parent, bool mesh_triangles, Shapes2d& out) {
   const Eigen::Isometry3d pose = parent * solid.pose;
   if (solid.kind == Solid::Kind::kSphere) {

@@ -27,6 +27,10 @@ void project_triangles(const TriangleMesh& mesh, const Eigen::Isometry3d& pose, 
 // in OMPL.app), and what lies above or below the robot is left out. Shared edges are kept once.
 void project_slab_surface(const TriangleMesh& mesh, double z0, double z1, Shapes2d& out);
 
+// The front view's frame: a point (x, y, z) of the world lands at (x, z, -y), so that the top-view
+// projection of a placed solid (view * parent) draws it seen along +y, x to the right, z up.
+Eigen::Isometry3d front_view_frame();
+
 // Top view of a solid placed by parent * solid.pose: spheres and vertical cylinders as circles,
 // meshes as triangles (mesh_triangles) or one convex hull, the rest as convex hulls.
 void project_solid(const Solid& solid, const Eigen::Isometry3d& parent, bool mesh_triangles, Shapes2d& out);

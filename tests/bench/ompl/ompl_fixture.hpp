@@ -51,7 +51,7 @@ inline Experiment make_experiment(const std::filesystem::path& dir) {
   e.time_limit_s = 5.0;
   e.node_limit = 1000;
   e.fingerprint = "abc123";
-  e.problems = {{"corridor", dir / "corridor.yaml", nullptr}, {"maze", dir / "maze.yaml", nullptr}};
+  e.problems = {{"corridor", dir / "corridor.yaml", nullptr, {}}, {"maze", dir / "maze.yaml", nullptr, {}}};
   PlannerConfig fixed{"prm_k5", "prm", {{"k", 5}}, {}};
   PlannerConfig drawn{"prm_draw", "prm", {{"lazy", "true"}}, {{"k", {"5", "10"}}}};
   e.planners = {fixed, drawn};

@@ -91,6 +91,19 @@ TEST_F(ArmBadInput, UrdfWithPrintfDirectivesInABadValue) {
   std::cout << "[ message  ] " << m << "\n";
 }
 
+// TinyXML (under urdfdom) read past the end of a file ending in a stray UTF-8 lead byte (tests/fuzz
+// found it): text that is not UTF-8 is refused first, naming the byte.
+TEST_F(ArmBadInput, UrdfThatIsNotUtf8) {
+  edit("two_link.urdf", "</robot>", "</robot>\xff\xff\xff\xf0\n");
+  const std::string m = error({path("two_link.urdf"), "not UTF-8"});
+  std::cout << "[ message  ] " << m << "\n";
+}
+
+TEST_F(ArmBadInput, UrdfWithMultiByteCharactersLoads) {
+  edit("two_link.urdf", "<robot name=\"two_link\"", "<robot name=\"zwei_gelenk_\u00e4\u2713\U0001F916\"");
+  EXPECT_NO_THROW(load_arm_problem(files()));
+}
+
 TEST_F(ArmBadInput, UrdfWithPercentInANameLoads) {
   edit("two_link.urdf", "<robot name=\"two_link\"", "<robot name=\"two%s_link%n\"");
   EXPECT_NO_THROW(load_arm_problem(files()));

@@ -30,8 +30,9 @@ TEST(MeshLoader, ObjQuadsAreTriangulated) {
 // assimp 5.2 read "tests/data/meshes/../../data/meshes/box.obj"-like paths (".." after folders) as
 // "File read error": an experiment beside the repository names the shared data that way.
 TEST(MeshLoader, PathsWithParentSegmentsLoad) {
-  const std::string roundabout = std::string(AMP_SOURCE_DIR) + "/tests/data/meshes/../../../tests/data/meshes/box.obj";
-  const TriangleMesh m = load_mesh(roundabout);
+  const std::filesystem::path roundabout =
+      std::filesystem::path(AMP_SOURCE_DIR) / "tests/data/meshes/../../../tests/data/meshes/box.obj";
+  const TriangleMesh m = load_mesh(roundabout.string());
   EXPECT_EQ(m.triangles.size(), 12u);
 }
 
