@@ -17,6 +17,7 @@ namespace amp::world {
 
 namespace detail {
 struct ArmGeometry;  // FCL geometry of the links, built once, shared by every checker
+struct ArmMotionCoefficients;  // per-part and per-pair joint-step bounds
 }
 
 // The robot side: kinematics, which pairs are checked, and the per-joint motion radii that bound
@@ -43,6 +44,15 @@ class ArmRobot {
   const detail::ArmGeometry& geometry() const { return *geometry_; }
   // Part index pairs (into geometry().parts) checked for self-collision.
   const std::vector<std::pair<int, int>>& self_part_pairs() const { return self_part_pairs_; }
+  // How far each part, and each self pair relative to each other, moves per joint step.
+  const detail::ArmMotionCoefficients& motion_coefficients() const { return *coefficients_; }
+  // The same, read one at a time: parts are the links' collision solids in link order.
+  std::size_t part_count() const;
+  int part_link(std::size_t part) const;
+  // Distance travelled per unit step of group joint k: by part `part`'s points, and by the two parts
+  // of self_part_pairs()[pair] relative to each other.
+  double part_motion(std::size_t part, int k) const;
+  double pair_motion(std::size_t pair, int k) const;
 
  private:
   ArmKinematics kinematics_;
@@ -52,6 +62,7 @@ class ArmRobot {
   double reach_ = 0.0;
   double min_diameter_ = 0.0;
   std::shared_ptr<const detail::ArmGeometry> geometry_;
+  std::shared_ptr<const detail::ArmMotionCoefficients> coefficients_;
 };
 
 // Bounds a solid's points' distance from its parent frame's origin (exact for boxes and meshes).
@@ -95,7 +106,6 @@ class ArmEnvironment final : public Environment {
   std::vector<std::string> object_ids_;
   std::shared_ptr<const ArmRobot> robot_;
   std::vector<std::vector<bool>> allowed_;  // [object][link]
-  bool any_allowed_ = false;
   // The views: solids placed by `view` (identity: top; the front view's frame), projected.
   Outline obstacles_seen_from(const Eigen::Isometry3d& view) const;
   Shapes2d robot_seen_from(const Eigen::Isometry3d& view, const State& s) const;

@@ -48,6 +48,16 @@ class ValidityChecker {
   // An upper bound on the distance any robot point travels while the state follows the space's
   // interpolation from a to b (t from 0 to 1). Pure geometry: counts nothing.
   double motion_bound(const State& a, const State& b) const { return compute_motion_bound(a, b); }
+  // The share of the segment from a to b (its parameter t, from 0 to 1) that the state may move
+  // from s, forward or back along the segment's direction, staying valid: what edge certification
+  // steps by. By default free_radius(s) / motion_bound(a, b); a checker that knows which of its
+  // parts moves how much per joint (arms) weighs each distance it measures against that part's own
+  // motion, which is never less. 0 when s is not valid; motion_bound(a, b) must be positive. Counts
+  // one clearance call.
+  double free_share(const State& s, const State& a, const State& b) const {
+    counters_->add_clearance_call();
+    return compute_free_share(s, a, b);
+  }
 
   core::Counters& counters() const { return *counters_; }
 
@@ -56,6 +66,9 @@ class ValidityChecker {
   virtual Clearance compute_clearance(const State& s) const = 0;
   virtual double compute_free_radius(const State& s) const = 0;
   virtual double compute_motion_bound(const State& a, const State& b) const = 0;
+  virtual double compute_free_share(const State& s, const State& a, const State& b) const {
+    return compute_free_radius(s) / compute_motion_bound(a, b);
+  }
 
   core::Counters* counters_;
 };

@@ -24,7 +24,7 @@ void register_competence_prms(PlannerRegistry& registry) {
     std::vector<core::ParamSpec> specs = {competence_spec(f.kind)};
     for (const core::ParamSpec& s : CompetencePrmSettings::schema().specs()) specs.push_back(s);
     const std::string what = std::string("PRM with a bidirectional A* grid local planner (Isto 2003), ") + f.what;
-    registry.add(PlannerInfo{f.name, what, specs}, [f](const core::Params& p) -> std::unique_ptr<Planner> {
+    registry.add(PlannerInfo{{f.name, what, specs}}, [f](const core::Params& p) -> std::unique_ptr<Planner> {
       CompetencePrmSettings s = CompetencePrmSettings::schema().read(p);
       s.kind = f.kind;
       s.value = p.real(competence_parameter(f.kind));

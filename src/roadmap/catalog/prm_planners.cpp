@@ -7,8 +7,8 @@
 namespace amp::roadmap {
 
 void register_prm(PlannerRegistry& registry) {
-  registry.add({"prm", "probabilistic roadmap (Kavraki et al. 1996); lazy=true gives Lazy PRM (Bohlin & Kavraki 2000)",
-                PrmSettings::schema().specs()},
+  registry.add({{"prm", "probabilistic roadmap (Kavraki et al. 1996); lazy=true gives Lazy PRM (Bohlin & Kavraki 2000)",
+                PrmSettings::schema().specs()}},
                [](const core::Params& p) { return std::make_unique<Prm>(PrmSettings::schema().read(p)); });
 }
 

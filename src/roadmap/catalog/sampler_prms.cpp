@@ -46,9 +46,9 @@ std::function<std::unique_ptr<InsertionObserver>(const PlanningContext&)> observ
 }  // namespace
 
 void register_sampler_prms(PlannerRegistry& registry) {
-  registry.add({"gaussian-prm",
+  registry.add({{"gaussian-prm",
                 "PRM with Gaussian sampling (Boor, Overmars & van der Stappen 1999): free samples near obstacles",
-                GaussianPrmSettings::schema().specs()},
+                GaussianPrmSettings::schema().specs()}},
                [](const core::Params& p) -> std::unique_ptr<Planner> {
                  const GaussianPrmSettings g = GaussianPrmSettings::schema().read(p);
                  PrmParts parts;
@@ -60,10 +60,10 @@ void register_sampler_prms(PlannerRegistry& registry) {
                  return std::make_unique<Prm>(prm_settings(g), std::move(parts));
                });
 
-  registry.add({"obprm",
+  registry.add({{"obprm",
                 "obstacle-based PRM (Amato et al. 1998): walk from a colliding state along a random ray to the "
                 "first free one",
-                ObprmSettings::schema().specs()},
+                ObprmSettings::schema().specs()}},
                [](const core::Params& p) -> std::unique_ptr<Planner> {
                  const ObprmSettings s = ObprmSettings::schema().read(p);
                  ObprmSamplerSettings o;
@@ -77,9 +77,9 @@ void register_sampler_prms(PlannerRegistry& registry) {
                  return std::make_unique<Prm>(prm_settings(s), std::move(parts));
                });
 
-  registry.add({"bridge-prm",
+  registry.add({{"bridge-prm",
                 "PRM with the bridge test (Hsu, Jiang, Reif & Sun 2003): free midpoints of short colliding pairs",
-                BridgePrmSettings::schema().specs()},
+                BridgePrmSettings::schema().specs()}},
                [](const core::Params& p) -> std::unique_ptr<Planner> {
                  const BridgePrmSettings s = BridgePrmSettings::schema().read(p);
                  BridgeSamplerSettings b;

@@ -7,8 +7,8 @@
 namespace amp::roadmap {
 
 void register_rrt_connect(PlannerRegistry& registry) {
-  registry.add({"rrt-connect", "bidirectional RRT, EXTEND one tree and CONNECT the other (Kuffner & LaValle 2000)",
-                RrtConnectSettings::schema().specs()},
+  registry.add({{"rrt-connect", "bidirectional RRT, EXTEND one tree and CONNECT the other (Kuffner & LaValle 2000)",
+                RrtConnectSettings::schema().specs()}},
                [](const core::Params& p) { return std::make_unique<RrtConnect>(RrtConnectSettings::schema().read(p)); });
 }
 

@@ -9,17 +9,17 @@
 namespace amp::roadmap {
 
 void register_uas_planners(PlannerRegistry& registry) {
-  registry.add({"hybrid-prm",
+  registry.add({{"hybrid-prm",
                 "Hybrid PRM (Hsu, Sanchez-Ante & Sun 2005) over uniform, Gaussian r and 2r, OBPRM (+ bridge, "
                 "expansion) samplers, with UAS's structural reward",
-                HybridPrmSettings::schema().specs()},
+                HybridPrmSettings::schema().specs()}},
                [](const core::Params& p) -> std::unique_ptr<Planner> {
                  return make_hybrid_prm(HybridPrmSettings::schema().read(p));
                });
-  registry.add({"uas",
+  registry.add({{"uas",
                 "UAS (unsupervised adaptive strategy): regions by clustering a training roadmap, Hybrid PRM per "
                 "region in round robin",
-                UasSettings::schema().specs()},
+                UasSettings::schema().specs()}},
                [](const core::Params& p) -> std::unique_ptr<Planner> {
                  return std::make_unique<Uas>(UasSettings::schema().read(p));
                });

@@ -35,7 +35,7 @@ bool EdgeCertifier::certify(const State& a, const State& b) {
     if (stop_ != nullptr && step % kPollEvery == kPollEvery - 1 && stop_->should_stop(0)) break;
     const bool from_start = step % 2 == 0;
     space_->interpolate(a, b, from_start ? lo : hi, scratch_);
-    const double advance = kStepShare * checker_->free_radius(scratch_) / bound;
+    const double advance = kStepShare * checker_->free_share(scratch_, a, b);
     if (!(advance >= kMinStep)) break;
     if (from_start) {
       lo += advance;

@@ -91,6 +91,7 @@ bool distance_callback(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void*
 }  // namespace
 
 struct ArmChecker::Scratch {
+  std::vector<double> steps;  // one per group joint
   std::vector<PartObjects> parts;
   std::vector<Eigen::Isometry3d> poses;  // one per link
   std::unordered_map<const fcl::CollisionObjectd*, std::size_t> scene_index;  // only when the scene allows pairs
@@ -103,6 +104,7 @@ ArmChecker::ArmChecker(const ArmEnvironment& env, core::Counters& counters)
     scratch_->parts.push_back({std::make_unique<fcl::CollisionObjectd>(p.geometry), std::make_unique<fcl::CollisionObjectd>(p.hull)});
   }
   scratch_->poses.resize(env_.robot().kinematics().link_count());
+  scratch_->steps.resize(static_cast<std::size_t>(env_.robot().kinematics().dof()));
   const auto& objects = env_.scene().scene().objects;
   bool any = false;
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -208,20 +210,89 @@ double ArmChecker::compute_free_radius(const State& s) const {
   return r;
 }
 
+const double* ArmChecker::joint_steps(const State& a, const State& b) const {
+  const ArmModel& m = env_.robot().model();
+  const std::vector<int>& joints = env_.robot().kinematics().group().joints;
+  double* steps = scratch_->steps.data();
+  for (std::size_t k = 0; k < joints.size(); ++k) {
+    const int i = static_cast<int>(k);
+    steps[k] = m.joint(joints[k]).type == ArmJointType::kContinuous ? std::abs(core::angle_difference(a[i], b[i]))
+                                                                    : std::abs(b[i] - a[i]);
+  }
+  return steps;
+}
+
 double ArmChecker::compute_motion_bound(const State& a, const State& b) const {
   // Joint-space interpolation moves each joint at a constant rate; a point's speed is at most the
   // sum over joints of rate x radius (docs/arms.md, "Certification").
-  const ArmModel& m = env_.robot().model();
-  const std::vector<int>& joints = env_.robot().kinematics().group().joints;
   const std::vector<double>& radii = env_.robot().motion_radii();
-  double bound = 0.0;
-  for (std::size_t k = 0; k < joints.size(); ++k) {
-    const int i = static_cast<int>(k);
-    const double step = m.joint(joints[k]).type == ArmJointType::kContinuous ? std::abs(core::angle_difference(a[i], b[i]))
-                                                                             : std::abs(b[i] - a[i]);
-    bound += radii[k] * step;
+  const double* steps = joint_steps(a, b);
+  return ArmMotionCoefficients::dot(radii.data(), steps, static_cast<int>(radii.size()));
+}
+
+// Over the segment's share t, part p moves at most t * v_p (v_p: its coefficients times the joint
+// steps), and a self pair relative to each other at most t * v_pair; each is free while that stays
+// below its distance at s, so the share is the least distance / v. A part or pair no group joint
+// moves keeps its distance everywhere: the state's validity covers it (it is the same at the start).
+double ArmChecker::compute_free_share(const State& s, const State& a, const State& b) const {
+  place(s);
+  const double* steps = joint_steps(a, b);
+  double share = std::numeric_limits<double>::infinity();
+  if (!scene_share(steps, share) || !self_share(steps, share)) return 0.0;
+  return share;
+}
+
+bool ArmChecker::scene_share(const double* steps, double& share) const {
+  Scratch& w = *scratch_;
+  const ArmMotionCoefficients& c = env_.robot().motion_coefficients();
+  SceneQuery& q = w.query;
+  const auto n = static_cast<std::size_t>(c.joints);
+  // Distal parts first: they move most, so their share bounds the rest's queries soonest.
+  for (std::size_t p = w.parts.size(); p-- > 0;) {
+    if (c.part_moves[p] == 0) continue;
+    const double v = ArmMotionCoefficients::dot(&c.part[p * n], steps, c.joints);
+    q.part = &w.parts[p];
+    q.link = env_.robot().geometry().parts[p].link;
+    if (v <= 0.0) {  // still along this segment: only its contact matters
+      if (touches_scene(p)) return false;
+      continue;
+    }
+    // Only a distance below share * v can lower the share: the broad phase prunes beyond it.
+    q.distance = share * v;
+    env_.scene().scene().manager.distance(w.parts[p].hull.get(), &q, distance_callback);
+    if (q.distance <= 0.0) return false;
+    share = std::min(share, q.distance / v);
   }
-  return bound;
+  return true;
+}
+
+bool ArmChecker::self_share(const double* steps, double& share) const {
+  const Scratch& w = *scratch_;
+  const ArmMotionCoefficients& c = env_.robot().motion_coefficients();
+  const auto& parts = env_.robot().geometry().parts;
+  const auto& pairs = env_.robot().self_part_pairs();
+  const auto n = static_cast<std::size_t>(c.joints);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (c.pair_moves[i] == 0) continue;
+    const auto ia = static_cast<std::size_t>(pairs[i].first), ib = static_cast<std::size_t>(pairs[i].second);
+    const double v = ArmMotionCoefficients::dot(&c.pair[i * n], steps, c.joints);
+    // The bounding spheres' gap bounds the distance from below: a pair that cannot lower the share
+    // (or, still along this segment, cannot touch) costs no query.
+    const ArmPart &a = parts[ia], &b = parts[ib];
+    const Eigen::Vector3d ca = w.poses[static_cast<std::size_t>(a.link)] * a.center;
+    const Eigen::Vector3d cb = w.poses[static_cast<std::size_t>(b.link)] * b.center;
+    const double gap = (ca - cb).norm() - a.radius - b.radius;
+    if (v <= 0.0) {
+      if (gap <= 0.0 && parts_collide(w.parts[ia], w.parts[ib])) return false;
+      continue;
+    }
+    if (gap >= share * v) continue;
+    const PartObjects& pb = w.parts[ib];
+    const double d = part_distance(w.parts[ia], pb.hull.get(), pb.exact.get(), pb.has_hull());
+    if (d <= 0.0) return false;
+    share = std::min(share, d / v);
+  }
+  return true;
 }
 
 }  // namespace amp::world::detail

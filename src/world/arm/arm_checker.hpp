@@ -25,6 +25,13 @@ class ArmChecker final : public ValidityChecker {
   Clearance compute_clearance(const State& s) const override;
   double compute_free_radius(const State& s) const override;
   double compute_motion_bound(const State& a, const State& b) const override;
+  double compute_free_share(const State& s, const State& a, const State& b) const override;
+  // Joint steps from a to b, absolute (continuous joints the short way), into the scratch buffer.
+  const double* joint_steps(const State& a, const State& b) const;
+  // free_share's two halves: the scene's parts and the self pairs, each lowering `share`;
+  // false when s is not valid.
+  bool scene_share(const double* steps, double& share) const;
+  bool self_share(const double* steps, double& share) const;
   void place(const State& s) const;
   bool touches_scene(std::size_t part) const;
 

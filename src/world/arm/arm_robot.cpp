@@ -12,12 +12,6 @@ namespace amp::world {
 
 namespace {
 
-// How far a joint's own motion can move its child frame's origin from where the joint's origin
-// puts it: a slide's travel, nothing for a rotation (the axis passes through the origin).
-double joint_travel(const ArmJoint& j) {
-  return j.type == ArmJointType::kPrismatic ? std::max(std::abs(j.lower), std::abs(j.upper)) : 0.0;
-}
-
 // A bound on the distance of every point of link `l`'s subtree from l's frame origin, over all
 // configurations: rotations below keep distances from their own origins, so the bound adds up.
 double subtree_reach(const ArmModel& m, int l) {
@@ -25,7 +19,7 @@ double subtree_reach(const ArmModel& m, int l) {
   for (const Solid& s : m.link(l).collision) r = std::max(r, solid_reach(s));
   for (const int j : m.link(l).child_joints) {
     const ArmJoint& joint = m.joint(j);
-    r = std::max(r, joint.origin.translation().norm() + joint_travel(joint) + subtree_reach(m, joint.child_link));
+    r = std::max(r, joint.origin.translation().norm() + detail::joint_travel(joint) + subtree_reach(m, joint.child_link));
   }
   return r;
 }
@@ -73,6 +67,7 @@ detail::ArmPart make_part(int link, const Solid& s) {
   local.pose.translation() = s.pose.translation() - part.center;
   local.pose.linear() = s.pose.linear();
   part.radius = solid_reach(local);
+  part.reach = solid_reach(s);
   return part;
 }
 
@@ -140,6 +135,17 @@ ArmRobot::ArmRobot(ArmKinematics kinematics, std::shared_ptr<const detail::ArmGe
       }
     }
   }
+  coefficients_ = std::make_shared<const detail::ArmMotionCoefficients>(
+      detail::arm_motion_coefficients(kinematics_, *geometry_, self_part_pairs_));
+}
+
+std::size_t ArmRobot::part_count() const { return geometry_->parts.size(); }
+int ArmRobot::part_link(std::size_t part) const { return geometry_->parts.at(part).link; }
+double ArmRobot::part_motion(std::size_t part, int k) const {
+  return coefficients_->part.at(part * static_cast<std::size_t>(coefficients_->joints) + static_cast<std::size_t>(k));
+}
+double ArmRobot::pair_motion(std::size_t pair, int k) const {
+  return coefficients_->pair.at(pair * static_cast<std::size_t>(coefficients_->joints) + static_cast<std::size_t>(k));
 }
 
 }  // namespace amp::world

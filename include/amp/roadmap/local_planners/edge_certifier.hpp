@@ -14,9 +14,11 @@ namespace amp::roadmap {
 // points, by conservative advancement: at parameter t the robot is free by at least
 // r = checker.free_radius(q(t)), and no robot point moves by more than L = checker.motion_bound(a, b)
 // over the whole segment (t in [0, 1]), so every t' with |t' - t| * L < r is free as well; step by
-// r / L from both ends towards the middle until the two fronts meet. A free radius below
-// `min_radius` (the robot is touching or almost touching) ends the proof: the segment is refused, a
-// conservative answer. Each step costs one counted clearance call, no CD call.
+// r / L from both ends towards the middle until the two fronts meet. The checker gives that share
+// (ValidityChecker::free_share): an arm's checker weighs each part's distance against that part's
+// own motion, a larger step. A step below a billionth of the segment (the robot is touching or
+// almost touching) ends the proof: the segment is refused, a conservative answer. Each step costs
+// one counted clearance call, no CD call.
 class EdgeCertifier {
  public:
   // stop (optional) is polled between steps so that a long proof cannot run past a run's limits;
