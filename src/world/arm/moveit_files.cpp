@@ -1,6 +1,7 @@
 #include "amp/world/moveit_files.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "amp/core/error.hpp"
 #include "amp/world/yaml_fields.hpp"
@@ -35,7 +36,12 @@ Eigen::Quaterniond orientation(const YamlFields& f, std::string_view key) {
   } else {
     q = Eigen::Quaterniond(v.number("w"), v.number("x"), v.number("y"), v.number("z"));
   }
-  if (!(q.norm() > 1e-9)) f.fail(key, "the quaternion must not be zero");
+  // Scaled by its largest component first: [1e200, 0, 0, 1e200] has an infinite norm and would
+  // normalise to nothing.
+  const double largest = q.coeffs().lpNorm<Eigen::Infinity>();
+  if (!std::isfinite(largest)) f.fail(key, "the quaternion must be finite");
+  if (!(largest > 1e-9)) f.fail(key, "the quaternion must not be zero");
+  q.coeffs() /= largest;
   return q.normalized();
 }
 
@@ -102,7 +108,10 @@ void add_object(const YamlFields& o, MoveItScene& scene) {
     const YamlFields ps = o.child(poses);
     if (ps.size() != items.size()) o.fail(poses, "expected one pose per entry of " + std::string(list));
     for (std::size_t i = 0; i < items.size(); ++i) {
-      scene.objects.push_back(make(items.element(i), frame * pose_of(ps.element(i))));
+      // Each pose finite is not enough: two of 1e308 add up to infinity.
+      const Eigen::Isometry3d placed = frame * pose_of(ps.element(i));
+      if (!placed.matrix().allFinite()) o.fail(poses, "entry " + std::to_string(i) + ": the pose, with the object's pose, is not finite");
+      scene.objects.push_back(make(items.element(i), placed));
       scene.object_ids.push_back(id);
     }
   };

@@ -3,9 +3,11 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "amp/core/error.hpp"
@@ -91,6 +93,7 @@ struct Context {
   fs::path base_dir;
   const UrdfOptions* options;
   std::map<fs::path, std::shared_ptr<const TriangleMesh>> meshes;  // a mesh used twice is read once
+  std::set<const urdf::Link*> reached;  // links the walk from the root has entered
 };
 
 // `package://NAME/rest`, `file://path` or a path relative to the URDF's folder.
@@ -182,8 +185,13 @@ ArmJoint make_joint(const urdf::Joint& j, int parent, int child, const Context& 
   out.origin = to_isometry(j.parent_to_joint_origin_transform);
   if (out.movable()) {
     const Eigen::Vector3d axis(j.axis.x, j.axis.y, j.axis.z);
-    if (!(axis.norm() > 1e-9)) throw FileError(c.label + ": joint '" + j.name + "': axis: must not be zero");
-    out.axis = axis.normalized();
+    // Scaled by its largest component first: a norm of 1e200 0 0 overflows to infinity and
+    // would normalise to zero.
+    const double largest = axis.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(largest) || !(largest > 1e-9)) {
+      throw FileError(c.label + ": joint '" + j.name + "': axis: must be finite and not zero");
+    }
+    out.axis = (axis / largest).normalized();
   }
   if (out.type == ArmJointType::kRevolute || out.type == ArmJointType::kPrismatic) {
     if (!j.limits) throw FileError(c.label + ": joint '" + j.name + "': <limit> is required for this joint type");
@@ -199,6 +207,12 @@ ArmJoint make_joint(const urdf::Joint& j, int parent, int child, const Context& 
 // Depth-first from the root, children in urdfdom's order (MoveIt's joint numbering).
 void add_subtree(const urdf::Link& link, int parent_joint, std::vector<ArmLink>& links, std::vector<ArmJoint>& joints,
                  std::vector<const urdf::Joint*>& mimic_of, Context& c) {
+  // urdfdom links its tree by pointers without checking it is one: a joint cycle the root reaches
+  // would recurse for ever (tests/fuzz found it), a link with two parent joints enter twice.
+  if (!c.reached.insert(&link).second) {
+    throw FileError(c.label + ": not a valid URDF: link '" + link.name +
+                    "' is reached twice from the root (a joint cycle, or two parent joints)");
+  }
   const int index = static_cast<int>(links.size());
   ArmLink out;
   out.name = link.name;
@@ -286,11 +300,18 @@ ArmModel parse_urdf(const std::string& xml, const std::string& label, const fs::
   const urdf::ModelInterfaceSharedPtr model = parse_with_urdfdom(xml, error);
   if (!model) throw FileError(label + ": not a valid URDF: " + error);
   if (!model->getRoot()) throw FileError(label + ": not a valid URDF: no root link");
-  Context c{label, base_dir, &options, {}};
+  Context c{label, base_dir, &options, {}, {}};
   std::vector<ArmLink> links;
   std::vector<ArmJoint> joints;
   std::vector<const urdf::Joint*> source;
   add_subtree(*model->getRoot(), -1, links, joints, source, c);
+  // A link the root does not reach (a cycle apart from the tree) would be left out silently.
+  for (const auto& [name, link] : model->links_) {
+    if (c.reached.count(link.get()) == 0) {
+      throw FileError(label + ": not a valid URDF: link '" + name + "' is not connected to the root link '" +
+                      model->getRoot()->name + "'");
+    }
+  }
   ArmModel out(model->getName(), std::move(links), std::move(joints));
   // Mimic joints name their leader by name, which may come later in the tree: resolve afterwards.
   std::vector<ArmJoint> resolved = out.joints();

@@ -7,12 +7,15 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <numbers>
 #include <iostream>
 #include <sstream>
 #include <string>
 
 #include "amp/core/error.hpp"
+#include "amp/world/arm_model.hpp"
 #include "amp/world/arm_problem.hpp"
+#include "amp/world/moveit_files.hpp"
 
 namespace amp::world {
 namespace {
@@ -97,6 +100,43 @@ TEST_F(ArmBadInput, UrdfThatIsNotUtf8) {
   edit("two_link.urdf", "</robot>", "</robot>\xff\xff\xff\xf0\n");
   const std::string m = error({path("two_link.urdf"), "not UTF-8"});
   std::cout << "[ message  ] " << m << "\n";
+}
+
+// urdfdom links its tree by pointers without checking it is one: a joint from link3 to itself
+// made the walk from the root recurse until the stack overflowed (tests/fuzz found it).
+TEST_F(ArmBadInput, UrdfWithAJointCycle) {
+  edit("two_link.urdf", "</robot>", "<joint name=\"loop\" type=\"fixed\"><parent link=\"link3\"/><child link=\"link3\"/></joint></robot>");
+  const std::string m = error({path("two_link.urdf"), "not a valid URDF", "link3"});
+  std::cout << "[ message  ] " << m << "\n";
+}
+
+// The wrist made its own parent: urdfdom returns the rest of the arm, which loaded as a 3-link arm
+// with link3 and the tool silently left out.
+TEST_F(ArmBadInput, UrdfWithALinkTheRootDoesNotReach) {
+  edit("two_link.urdf", "<parent link=\"link2\"/>", "<parent link=\"link3\"/>");
+  const std::string m = error({path("two_link.urdf"), "not a valid URDF", "not connected to the root"});
+  std::cout << "[ message  ] " << m << "\n";
+}
+
+// A vector's norm of 1e200 overflows: the axis must still come out as (1, 0, 0), the quaternion
+// [1e200, 0, 0, 1e200] as a quarter turn about x, and poses that add up to infinity be refused.
+TEST_F(ArmBadInput, HugeVectorsNormaliseOrAreRefused) {
+  edit("two_link.urdf", "<axis xyz=\"1 0 0\"/>", "<axis xyz=\"1e200 0 0\"/>");
+  const ArmModel m = load_urdf(dir_ / "two_link.urdf");
+  EXPECT_TRUE(m.joint(m.joint_index("slide")).axis.isApprox(Eigen::Vector3d::UnitX())) << m.joint(m.joint_index("slide")).axis.transpose();
+  edit("scene.yaml", "orientation: [0, 0, 0, 1]", "orientation: [1e200, 0, 0, 1e200]");
+  const MoveItScene scene = load_moveit_scene(dir_ / "scene.yaml");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const Eigen::Matrix3d quarter_x = Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  EXPECT_TRUE(scene.objects[0].pose.linear().isApprox(quarter_x, 1e-12)) << scene.objects[0].pose.linear();
+  edit("scene.yaml", "position: [1.0, 0, 0.15]", "position: [1e308, 0, 0.15]");
+  std::string text = read(dir_ / "scene.yaml");
+  const std::size_t at = text.find("      primitive_poses:");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, "      pose: {position: [1e308, 0, 0], orientation: [0, 0, 0, 1]}\n");
+  std::ofstream(dir_ / "scene.yaml") << text;
+  const std::string e = error({path("scene.yaml"), "not finite"});
+  std::cout << "[ message  ] " << e << "\n";
 }
 
 TEST_F(ArmBadInput, UrdfWithMultiByteCharactersLoads) {
