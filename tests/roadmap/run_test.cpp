@@ -97,7 +97,7 @@ class ThrowingPlanner final : public Planner {
 
 TEST(ExecuteRun, PlannerFailureIsAnErrorRecord) {
   PlannerRegistry r;
-  r.add({"bad", "throws", {}}, [](const core::Params&) { return std::make_unique<ThrowingPlanner>(); });
+  r.add({{"bad", "throws", {}}}, [](const core::Params&) { return std::make_unique<ThrowingPlanner>(); });
   const RunOutcome o = execute_run(test::point_problem(true), "bad", {}, 1, kTimeLimit, 100, r);
   EXPECT_EQ(o.record.status, core::PlanStatus::kError);
   EXPECT_EQ(o.record.message, "out of cheese");

@@ -67,8 +67,8 @@ TEST(PlannerRegistry, CustomPlannersAndChoices) {
   PlannerRegistry r;
   register_prm(r);
   int made = 0;
-  r.add({"toy", "a test planner", {{"mode", core::ParamType::kChoice, "fast", 0, 0, {"fast", "slow"}, "speed"},
-                                   {"gamma", core::ParamType::kReal, 0.5, 0.0, 1.0, {}, "mixing"}}},
+  r.add({{"toy", "a test planner", {{"mode", core::ParamType::kChoice, "fast", 0, 0, {"fast", "slow"}, "speed"},
+                                    {"gamma", core::ParamType::kReal, 0.5, 0.0, 1.0, {}, "mixing"}}}},
         [&made](const core::Params& p) {
           EXPECT_EQ(p.choice("mode"), "slow");
           EXPECT_DOUBLE_EQ(p.real("gamma"), 0.5);  // default filled in
@@ -80,7 +80,7 @@ TEST(PlannerRegistry, CustomPlannersAndChoices) {
   EXPECT_EQ(made, 1);
   const std::string m = error_of([&] { r.make("toy", {{"mode", "medium"}}); });
   EXPECT_TRUE(contains(m, "'medium' is not one of fast, slow")) << m;
-  EXPECT_THROW(r.add({"toy", "", {}}, nullptr), std::logic_error);
+  EXPECT_THROW(r.add({{"toy", "", {}}}, nullptr), std::logic_error);
 }
 
 }  // namespace
