@@ -9,6 +9,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "amp/core/error.hpp"
 #include "amp/world/arm_model.hpp"
@@ -79,6 +80,26 @@ urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& xml, std::st
   if (!model && error.empty()) error = captured.first().empty() ? "urdfdom could not parse it" : captured.first();
   return model;
 }
+
+// urdfdom holds a link's children by shared_ptr and does not check that its links form a tree: a
+// joint cycle makes a link own itself, and the model then never frees (LeakSanitizer found it).
+// Clearing every link's child lists when the model is done with breaks any such cycle.
+class ChildListsCleared {
+ public:
+  explicit ChildListsCleared(urdf::ModelInterfaceSharedPtr model) : model_(std::move(model)) {}
+  ChildListsCleared(const ChildListsCleared&) = delete;
+  ChildListsCleared& operator=(const ChildListsCleared&) = delete;
+  ~ChildListsCleared() {
+    if (!model_) return;
+    for (auto& [name, link] : model_->links_) {
+      link->child_links.clear();
+      link->child_joints.clear();
+    }
+  }
+
+ private:
+  urdf::ModelInterfaceSharedPtr model_;
+};
 
 Eigen::Isometry3d to_isometry(const urdf::Pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -298,6 +319,7 @@ ArmModel parse_urdf(const std::string& xml, const std::string& label, const fs::
   }
   std::string error;
   const urdf::ModelInterfaceSharedPtr model = parse_with_urdfdom(xml, error);
+  const ChildListsCleared freed_afterwards(model);
   if (!model) throw FileError(label + ": not a valid URDF: " + error);
   if (!model->getRoot()) throw FileError(label + ": not a valid URDF: no root link");
   Context c{label, base_dir, &options, {}, {}};
