@@ -127,17 +127,29 @@ PYBIND11_MODULE(amp, m) {
       .def_property_readonly("goal", [](const amp::world::Problem& p) { return as_vector(p.goal()); })
       .def("__repr__", [](const amp::world::Problem& p) { return "<amp.Problem '" + p.name + "'>"; });
 
-  m.def("load_problem", [](const std::string& path) { return amp::world::load_problem(path); }, py::arg("path"),
-        "Loads a problem file (YAML or OMPL.app .cfg); raises amp.Error naming the file and field");
+  m.def(
+      "load_problem",
+      [](const std::string& path, const std::string& collision, const std::string& spheres) {
+        amp::world::ProblemOverrides o{collision, spheres, amp::world::default_sphere_cache_dir()};
+        if (o.collision.empty() && !spheres.empty()) o.collision = "spheres";
+        return amp::world::load_problem(path, o);
+      },
+      py::arg("path"), py::arg("collision") = "", py::arg("spheres") = "",
+      "Loads a problem file (YAML or OMPL.app .cfg); an arm's collision model 'meshes' or 'spheres' (and a spherized "
+      "URDF) over the file's, as amp plan --collision --spheres; raises amp.Error naming the file and field");
   m.def(
       "load_arm_problem",
       [](const std::string& urdf, const std::string& srdf, const std::string& scene, const std::string& request,
-         const std::vector<std::string>& package_paths) {
-        amp::world::ArmFiles files{urdf, srdf, scene, request, {}};
+         const std::vector<std::string>& package_paths, const std::string& collision, const std::string& spheres) {
+        amp::world::ArmFiles files{urdf, srdf, scene, request, {}, {}};
         for (const std::string& p : package_paths) files.package_paths.emplace_back(p);
+        files.collision.model = amp::world::parse_arm_collision(collision.empty() && !spheres.empty() ? "spheres" : collision.empty() ? "meshes" : collision, "collision");
+        files.collision.spheres = spheres;
+        files.collision.cache_dir = amp::world::default_sphere_cache_dir();
         return amp::world::load_arm_problem(files);
       },
       py::arg("urdf"), py::arg("srdf"), py::arg("scene"), py::arg("request"), py::arg("package_paths") = std::vector<std::string>{},
+      py::arg("collision") = "", py::arg("spheres") = "",
       "Loads an arm problem from a MoveIt user's files (as amp plan --urdf --srdf --scene --request)");
   m.def("plan", &plan, py::arg("problem"), py::arg("planner") = "prm", py::arg("seed") = 1,
         py::arg("params") = py::dict(), py::arg("time_limit") = py::none(), py::arg("node_limit") = py::none(),

@@ -49,7 +49,7 @@ int run_plan(const PlanOptions& o) {
   }
   if (o.problem.empty() && !o.arm.given()) throw Error("PROBLEM: give a problem file, or --urdf, --srdf, --scene and --request");
   world::Problem problem =
-      o.arm.given() ? load_arm_input(o.arm, o.problem) : load_problem_input(o.problem, o.map, true, *o.cmd);
+      o.arm.given() ? load_arm_input(o.arm, o.problem) : load_problem_input(o.problem, o.map, true, *o.cmd, &o.arm);
   if (!o.edge_check.empty()) problem.defaults.edge_check = core::parse_edge_check_mode(o.edge_check);
   const std::string planner = resolve_planner(o.planner, problem);
   const double time_limit = o.time_limit > 0.0 ? o.time_limit : problem.defaults.time_limit_s;

@@ -21,7 +21,26 @@ void add_arm_options(CLI::App* cmd, ArmInput& a) {
   cmd->add_option("--request", a.request, "An arm: a MoveIt MotionPlanRequest YAML (group, start, joint goal)");
   cmd->add_option("--package-path", a.package_paths,
                   "An arm: a folder where package://NAME/... meshes are looked for, beside the URDF's (repeatable)");
+  cmd->add_option("--collision", a.collision,
+                  "An arm: check collisions on its meshes, or on spheres that cover them (generated, cached) [meshes]")
+      ->check(CLI::IsMember({"meshes", "spheres"}));
+  cmd->add_option("--spheres", a.spheres,
+                  "An arm: a spherized URDF, grown to cover the meshes, as the sphere model (implies --collision spheres)");
 }
+
+namespace {
+
+world::ProblemOverrides overrides_of(const ArmInput* a) {
+  world::ProblemOverrides o;
+  if (a != nullptr) {
+    o.collision = a->collision.empty() && !a->spheres.empty() ? "spheres" : a->collision;
+    o.spheres = a->spheres;
+  }
+  o.cache_dir = world::default_sphere_cache_dir();
+  return o;
+}
+
+}  // namespace
 
 world::Problem load_arm_input(const ArmInput& a, const std::string& problem_file) {
   if (!problem_file.empty()) {
@@ -32,12 +51,18 @@ world::Problem load_arm_input(const ArmInput& a, const std::string& problem_file
   for (const auto& [flag, value] : flags) {
     if (value->empty()) throw Error(std::string(flag) + ": an arm problem needs --urdf, --srdf, --scene and --request");
   }
-  world::ArmFiles files{a.urdf, a.srdf, a.scene, a.request, {}};
+  world::ArmFiles files{a.urdf, a.srdf, a.scene, a.request, {}, {}};
   for (const std::string& p : a.package_paths) files.package_paths.emplace_back(p);
+  const world::ProblemOverrides o = overrides_of(&a);
+  if (o.collision == "meshes" && !o.spheres.empty()) throw Error("--spheres: a spherized URDF needs --collision spheres");
+  files.collision.model = o.collision.empty() ? world::ArmCollision::kMeshes : world::parse_arm_collision(o.collision, "--collision");
+  files.collision.spheres = o.spheres;
+  files.collision.cache_dir = o.cache_dir;
   return world::load_arm_problem(files);
 }
 
-world::Problem load_problem_input(const std::string& file, const MapQuery& q, bool needs_goal, const CLI::App& cmd) {
+world::Problem load_problem_input(const std::string& file, const MapQuery& q, bool needs_goal, const CLI::App& cmd,
+                                  const ArmInput* arm) {
   if (!world::is_map_server_yaml(file)) {
     for (const char* flag : {"--start", "--goal", "--radius"}) {
       if (cmd.count(flag) > 0) {
@@ -45,7 +70,11 @@ world::Problem load_problem_input(const std::string& file, const MapQuery& q, bo
                     " is a problem file with its own");
       }
     }
-    return world::load_problem(file);
+    return world::load_problem(file, overrides_of(arm));
+  }
+  if (arm != nullptr && (!arm->collision.empty() || !arm->spheres.empty())) {
+    throw Error(std::string(arm->collision.empty() ? "--spheres" : "--collision") + ": " + file +
+                " is a ROS map_server map; a collision model is chosen only for an arm");
   }
   if (q.start.empty()) {
     throw Error("--start: " + file + " is a ROS map_server map, not a problem file: give the start as --start X Y");

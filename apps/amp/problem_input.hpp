@@ -22,10 +22,12 @@ void add_map_query_options(CLI::App* cmd, MapQuery& q);
 struct ArmInput {
   std::string urdf, srdf, scene, request;
   std::vector<std::string> package_paths;
+  std::string collision;  // --collision: meshes | spheres (empty: the problem's)
+  std::string spheres;    // --spheres: a spherized URDF to grow into a cover
   bool given() const { return !urdf.empty() || !srdf.empty() || !scene.empty() || !request.empty(); }
 };
 
-// --urdf, --srdf, --scene, --request and --package-path on `cmd`.
+// --urdf, --srdf, --scene, --request, --package-path, --collision and --spheres on `cmd`.
 void add_arm_options(CLI::App* cmd, ArmInput& a);
 
 // The arm problem of the four files; throws amp::Error naming the flag when one is missing or a
@@ -36,6 +38,8 @@ world::Problem load_arm_input(const ArmInput& a, const std::string& problem_file
 // (the start when !needs_goal and no --goal) and radius. Throws amp::Error naming the flag for a map
 // without --start (or --goal, when needed), or for --start/--goal/--radius given with a problem
 // file, which carries its own.
-world::Problem load_problem_input(const std::string& file, const MapQuery& q, bool needs_goal, const CLI::App& cmd);
+// `arm` (may be null): --collision and --spheres over the problem file's.
+world::Problem load_problem_input(const std::string& file, const MapQuery& q, bool needs_goal, const CLI::App& cmd,
+                                  const ArmInput* arm = nullptr);
 
 }  // namespace amp::cli

@@ -180,7 +180,7 @@ core::ParamMap trial_params(const Experiment& e, const TrialId& id, std::map<std
 // requestNNNN.yaml (MotionBenchMaker's layout), in name order, the first N when given; each a
 // problem named <folder>-requestNNNN (docs/experiment-format.md, "Arm folders").
 std::vector<ExperimentProblem> arm_folder_problems(const world::YamlFields& p) {
-  p.allow_only({"arm_folder", "urdf", "srdf", "count", "package_paths"});
+  p.allow_only({"arm_folder", "urdf", "srdf", "count", "package_paths", "collision", "spheres"});
   const std::filesystem::path folder = p.file().parent_path() / p.string("arm_folder");
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) p.fail("arm_folder", "no such folder '" + folder.string() + "'");
@@ -202,9 +202,21 @@ std::vector<ExperimentProblem> arm_folder_problems(const world::YamlFields& p) {
       package_paths.push_back(p.file().parent_path() / paths.element(k).node().Scalar());
     }
   }
+  // The collision model, as a problem file's `collision:` and `spheres:` (docs/arms.md, "Sphere model").
+  world::ArmCollisionOptions collision;
+  if (p.has("spheres")) collision.spheres = p.file_path("spheres");
+  try {
+    collision.model = world::parse_arm_collision(p.string("collision", collision.spheres.empty() ? "meshes" : "spheres"), "collision");
+  } catch (const Error& err) {
+    p.fail("collision", err.what());
+  }
+  if (collision.model == world::ArmCollision::kMeshes && !collision.spheres.empty()) {
+    p.fail("spheres", "a spherized URDF is used only with collision: spheres");
+  }
+  collision.cache_dir = world::default_sphere_cache_dir();
   world::ArmDescription robot;
   try {
-    robot = world::load_arm_description(p.file_path("urdf"), p.file_path("srdf"), package_paths);
+    robot = world::load_arm_description(p.file_path("urdf"), p.file_path("srdf"), package_paths, collision);
   } catch (const Error& err) {
     p.fail("", err.what());
   }
@@ -217,6 +229,7 @@ std::vector<ExperimentProblem> arm_folder_problems(const world::YamlFields& p) {
     ExperimentProblem ep;
     ep.file = request;
     ep.inputs = {scene, robot.urdf, robot.srdf};
+    if (!collision.spheres.empty()) ep.inputs.push_back(collision.spheres);
     try {
       ep.problem = std::make_shared<const world::Problem>(world::load_arm_problem(robot, scene, request));
     } catch (const Error& err) {

@@ -72,19 +72,24 @@ RunOutcome execute_run(const world::Problem& problem, const std::string& planner
 
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult result;
-  try {
-    const core::StopCondition stop(time_limit_s, nodes, cancel);
-    const PlanningContext ctx{*problem.space, *problem.environment, *checker, problem.seeds,
-                              problem.defaults.edge_check, &stop};
-    result = p->plan(ctx, stop, rng);
-  } catch (const InvalidSeedError&) {
-    throw;
-  } catch (const ParameterError&) {
-    throw;
-  } catch (const std::exception& e) {
-    result = PlanResult{};
-    result.status = core::PlanStatus::kError;
-    r.message = e.what();
+  if (!problem.unsolvable_because.empty()) {
+    result.status = core::PlanStatus::kUnsolvable;
+    r.message = problem.unsolvable_because;
+  } else {
+    try {
+      const core::StopCondition stop(time_limit_s, nodes, cancel);
+      const PlanningContext ctx{*problem.space, *problem.environment, *checker, problem.seeds,
+                                problem.defaults.edge_check, &stop};
+      result = p->plan(ctx, stop, rng);
+    } catch (const InvalidSeedError&) {
+      throw;
+    } catch (const ParameterError&) {
+      throw;
+    } catch (const std::exception& e) {
+      result = PlanResult{};
+      result.status = core::PlanStatus::kError;
+      r.message = e.what();
+    }
   }
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

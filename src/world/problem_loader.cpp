@@ -70,9 +70,31 @@ void read_run_defaults(const YamlFields& root, Problem& p) {
 
 // A problem file naming a MoveIt user's four files (docs/problem-format.md, "Arms"), paths relative
 // to the problem file.
-Problem yaml_arm_problem(const YamlFields& root, const std::filesystem::path& file) {
-  root.allow_only({"name", "description", "urdf", "srdf", "scene", "request", "package_paths", "defaults", "edge_check"});
-  ArmFiles files{root.file_path("urdf"), root.file_path("srdf"), root.file_path("scene"), root.file_path("request"), {}};
+// The collision model: the caller's over the file's (`collision:`, `spheres:`); a spherized URDF
+// alone implies spheres.
+ArmCollisionOptions arm_collision(const YamlFields& root, const ProblemOverrides& overrides) {
+  ArmCollisionOptions c;
+  c.spheres = !overrides.spheres.empty() ? overrides.spheres : root.has("spheres") ? root.file_path("spheres") : "";
+  std::string model = overrides.collision;
+  if (model.empty() && root.has("collision")) model = root.string("collision", "meshes");
+  if (model.empty()) model = c.spheres.empty() ? "meshes" : "spheres";
+  try {
+    c.model = parse_arm_collision(model, "collision");
+  } catch (const ParameterError& e) {
+    root.fail("collision", e.what());
+  }
+  if (c.model == ArmCollision::kMeshes && !c.spheres.empty()) {
+    root.fail("spheres", "a spherized URDF is used only with collision: spheres");
+  }
+  c.cache_dir = overrides.cache_dir.empty() ? default_sphere_cache_dir() : overrides.cache_dir;
+  return c;
+}
+
+Problem yaml_arm_problem(const YamlFields& root, const std::filesystem::path& file, const ProblemOverrides& overrides) {
+  root.allow_only({"name", "description", "urdf", "srdf", "scene", "request", "package_paths", "defaults", "edge_check",
+                   "collision", "spheres"});
+  ArmFiles files{root.file_path("urdf"), root.file_path("srdf"), root.file_path("scene"), root.file_path("request"), {},
+                 arm_collision(root, overrides)};
   if (root.has("package_paths")) {
     const YamlFields paths = root.child("package_paths");
     for (std::size_t i = 0; i < paths.size(); ++i) {
@@ -87,12 +109,15 @@ Problem yaml_arm_problem(const YamlFields& root, const std::filesystem::path& fi
   return p;
 }
 
-Problem yaml_problem(const YamlFields& root, const std::filesystem::path& file) {
+Problem yaml_problem(const YamlFields& root, const std::filesystem::path& file, const ProblemOverrides& overrides = {}) {
   if (!root.is_map()) root.fail("", "a problem file must be a YAML mapping");
   if (root.has("urdf")) {
-    Problem p = yaml_arm_problem(root, file);
+    Problem p = yaml_arm_problem(root, file, overrides);
     read_run_defaults(root, p);
     return p;
+  }
+  if (!overrides.collision.empty() || !overrides.spheres.empty()) {
+    root.fail("", "a collision model (meshes or spheres) is chosen only for an arm problem (urdf:)");
   }
   // `events:` (obstacles that appear or vanish while a robot drives) belongs to the nav module's
   // simulator, which reads it itself (nav::load_events); planners ignore it.
@@ -135,8 +160,8 @@ Problem yaml_problem(const YamlFields& root, const std::filesystem::path& file) 
   return p;
 }
 
-Problem load_yaml_problem(const std::filesystem::path& file) {
-  return yaml_problem(YamlFields(load_yaml_file(file), file, ""), file);
+Problem load_yaml_problem(const std::filesystem::path& file, const ProblemOverrides& overrides) {
+  return yaml_problem(YamlFields(load_yaml_file(file), file, ""), file, overrides);
 }
 
 std::string seed_name(const Problem& p, std::size_t i) {
@@ -146,6 +171,7 @@ std::string seed_name(const Problem& p, std::size_t i) {
 
 // Every seed must lie in bounds and be free: a planner cannot fix a bad query, so say so up front.
 void validate_seeds(const Problem& p) {
+  if (!p.unsolvable_because.empty()) return;  // checked against the exact geometry by its loader
   core::Counters scratch;
   const auto checker = p.environment->make_checker(scratch);
   for (std::size_t i = 0; i < p.seeds.size(); ++i) {
@@ -163,7 +189,9 @@ void validate_seeds(const Problem& p) {
 
 }  // namespace
 
-Problem load_problem(const std::filesystem::path& file) {
+Problem load_problem(const std::filesystem::path& file) { return load_problem(file, ProblemOverrides{}); }
+
+Problem load_problem(const std::filesystem::path& file, const ProblemOverrides& overrides) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw FileError(file.string() + ": no such file");
   if (!std::filesystem::is_regular_file(file, ec)) throw FileError(file.string() + ": not a regular file");
@@ -171,9 +199,12 @@ Problem load_problem(const std::filesystem::path& file) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   Problem p;
   if (ext == ".cfg") {
+    if (!overrides.collision.empty() || !overrides.spheres.empty()) {
+      throw FileError(file.string() + ": a collision model (meshes or spheres) is chosen only for an arm problem");
+    }
     p = load_ompl_cfg(file);
   } else if (ext == ".yaml" || ext == ".yml") {
-    p = load_yaml_problem(file);
+    p = load_yaml_problem(file, overrides);
   } else {
     throw FileError(file.string() + ": unknown problem format '" + ext + "' (expected .yaml, .yml or .cfg)");
   }

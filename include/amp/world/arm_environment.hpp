@@ -81,7 +81,13 @@ class ArmEnvironment final : public Environment {
                  std::shared_ptr<const ArmRobot> robot, const AllowedCollisions& allowed);
 
   int workspace_dimension() const override { return 3; }
+  // A robot of spheres (with_sphere_collision) in a scene of primitives gets the sphere checker
+  // (exact sphere distances, docs/arms.md "Sphere model"); anything else FCL's.
   std::unique_ptr<ValidityChecker> make_checker(core::Counters& counters) const override;
+  // FCL on the same geometry, whatever it is: the reference the sphere checker is tested against.
+  std::unique_ptr<ValidityChecker> make_fcl_checker(core::Counters& counters) const;
+  // Whether make_checker gives the sphere checker.
+  bool sphere_checked() const { return sphere_checked_; }
   Eigen::AlignedBox3d workspace_bounds() const override { return scene_->bounds(); }
   Outline obstacle_outline() const override;
   Shapes2d robot_outline(const State& s) const override;
@@ -106,6 +112,7 @@ class ArmEnvironment final : public Environment {
   std::vector<std::string> object_ids_;
   std::shared_ptr<const ArmRobot> robot_;
   std::vector<std::vector<bool>> allowed_;  // [object][link]
+  bool sphere_checked_ = false;
   // The views: solids placed by `view` (identity: top; the front view's frame), projected.
   Outline obstacles_seen_from(const Eigen::Isometry3d& view) const;
   Shapes2d robot_seen_from(const Eigen::Isometry3d& view, const State& s) const;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "amp/world/arm_spheres.hpp"
 #include "amp/world/arm_srdf.hpp"
 #include "amp/world/problem.hpp"
 
@@ -16,9 +17,26 @@ namespace detail {
 struct ArmGeometry;
 }
 
+// Which geometry collision checking uses (docs/arms.md, "Sphere model"): the URDF's collision
+// solids through FCL (the default), or spheres covering them through the sphere checker.
+enum class ArmCollision { kMeshes, kSpheres };
+
+// Reads "meshes" or "spheres"; throws ParameterError naming `where` otherwise.
+ArmCollision parse_arm_collision(const std::string& text, const std::string& where);
+
+// How the robot's collision geometry is made.
+struct ArmCollisionOptions {
+  ArmCollision model = ArmCollision::kMeshes;
+  // With kSpheres: a spherized URDF whose spheres are grown to cover the solids; empty: spheres
+  // generated from the solids (through `cache_dir`, when not empty).
+  std::filesystem::path spheres;
+  std::filesystem::path cache_dir;
+};
+
 struct ArmFiles {
   std::filesystem::path urdf, srdf, scene, request;
   std::vector<std::filesystem::path> package_paths;  // for package:// URIs beyond the URDF's folder
+  ArmCollisionOptions collision;
 };
 
 // The request's group as a JointSpace ("arm": the group's joints in the model's order, hard
@@ -36,12 +54,18 @@ Problem load_arm_problem(const ArmFiles& files);
 // collision geometry.
 struct ArmDescription {
   std::filesystem::path urdf, srdf;
+  // The model planned with: the URDF's, or its sphere model (collision: spheres).
   std::shared_ptr<const ArmModel> model;
+  // With spheres: the URDF's own model (the exact geometry) and how the spheres cover it.
+  std::shared_ptr<const ArmModel> exact_model;
+  std::shared_ptr<const detail::ArmGeometry> exact_geometry;
+  std::vector<LinkCoverReport> cover;
   Srdf srdf_content;
   std::shared_ptr<const detail::ArmGeometry> geometry;
 };
 ArmDescription load_arm_description(const std::filesystem::path& urdf, const std::filesystem::path& srdf,
-                                    const std::vector<std::filesystem::path>& package_paths = {});
+                                    const std::vector<std::filesystem::path>& package_paths = {},
+                                    const ArmCollisionOptions& collision = {});
 // load_arm_problem on a robot already read.
 Problem load_arm_problem(const ArmDescription& robot, const std::filesystem::path& scene,
                          const std::filesystem::path& request);

@@ -40,6 +40,10 @@ struct Problem {
   // Configurations to join: {start, goal} for a query, or the seeds Isto 2003 joins in order.
   std::vector<State> seeds;
   ProblemDefaults defaults;
+  // Set when the problem's own files accept every seed but the model planned with does not (an
+  // arm's sphere cover is larger than its meshes, docs/arms.md "Sphere model"): says which seed
+  // and what it touches. Every run then reports kUnsolvable with it, without planning.
+  std::string unsolvable_because;
 
   const State& start() const { return seeds.front(); }
   const State& goal() const { return seeds.back(); }
@@ -55,6 +59,18 @@ struct LoadedWorld {
 // Throws FileError naming the file and field on any fault, including start/goal out of bounds or
 // in collision.
 Problem load_problem(const std::filesystem::path& file);
+
+// What a caller may set over a problem file (`amp plan --collision`, `--spheres`): an arm problem's
+// collision model ("meshes" or "spheres"; empty: the file's `collision:`, else meshes), its
+// spherized URDF (empty: the file's `spheres:`), and where generated spheres are cached (empty:
+// default_sphere_cache_dir()). Throws FileError when `collision` or `spheres` is set and the file is
+// not an arm problem.
+struct ProblemOverrides {
+  std::string collision;
+  std::filesystem::path spheres;
+  std::filesystem::path cache_dir;
+};
+Problem load_problem(const std::filesystem::path& file, const ProblemOverrides& overrides);
 
 // Whether `file` is a ROS map_server YAML (a mapping with `image` and `resolution`, and neither
 // `world` nor `robot`) rather than a problem file.

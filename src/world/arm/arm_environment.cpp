@@ -1,6 +1,7 @@
 #include "amp/world/arm_environment.hpp"
 
 #include "world/arm/arm_checker.hpp"
+#include "world/arm/sphere_checker.hpp"
 #include "world/spatial/projection.hpp"
 
 namespace amp::world {
@@ -15,6 +16,7 @@ ArmEnvironment::ArmEnvironment(std::shared_ptr<const SpatialWorld> scene, std::v
       allowed_[i][l] = !allowed.empty() && allowed.allowed(object_ids_[i], links[l].name);
     }
   }
+  sphere_checked_ = detail::sphere_checker_applies(*this);
 }
 
 bool ArmEnvironment::allowed(std::size_t object, int link) const {
@@ -22,6 +24,11 @@ bool ArmEnvironment::allowed(std::size_t object, int link) const {
 }
 
 std::unique_ptr<ValidityChecker> ArmEnvironment::make_checker(core::Counters& counters) const {
+  if (sphere_checked_) return std::make_unique<detail::SphereChecker>(*this, counters);
+  return make_fcl_checker(counters);
+}
+
+std::unique_ptr<ValidityChecker> ArmEnvironment::make_fcl_checker(core::Counters& counters) const {
   const std::lock_guard<std::mutex> lock(make_mutex_);
   return std::make_unique<detail::ArmChecker>(*this, counters);
 }

@@ -1,5 +1,7 @@
 #include "amp/world/arm_kinematics.hpp"
 
+#include <cmath>
+
 #include "amp/core/error.hpp"
 
 namespace amp::world {
@@ -51,7 +53,17 @@ void ArmKinematics::link_poses(const State& q, Eigen::Isometry3d* out) const {
     const ArmJoint& joint = joints[j];
     Eigen::Isometry3d& child = out[joint.child_link];
     child = out[joint.parent_link] * joint.origin;
-    if (joint.movable()) child = child * joint_motion(joint, joint_value(q, static_cast<int>(j)));
+    if (!joint.movable()) continue;
+    const double v = joint_value(q, static_cast<int>(j));
+    if (joint.type != ArmJointType::kPrismatic && joint.axis == Eigen::Vector3d::UnitZ()) {
+      // A turn about z (most URDFs' convention) mixes two columns: a quarter of the general product.
+      const double c = std::cos(v), s = std::sin(v);
+      const Eigen::Vector3d x = child.linear().col(0), y = child.linear().col(1);
+      child.linear().col(0) = c * x + s * y;
+      child.linear().col(1) = c * y - s * x;
+    } else {
+      child = child * joint_motion(joint, v);
+    }
   }
 }
 

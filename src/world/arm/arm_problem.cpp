@@ -141,21 +141,51 @@ void check_seed(const ArmEnvironment& env, const State& s, const std::string& wh
   }
 }
 
+Problem finish_arm_problem(Problem p, const fs::path& scene_file, const fs::path& request_file, const MoveItRequest& request) {
+  p.name = scene_file.parent_path().filename().string() + "-" + request_file.stem().string();
+  p.file = request_file;
+  p.defaults.planner = "rrt-connect";
+  if (request.allowed_planning_time > 0.0) p.defaults.time_limit_s = request.allowed_planning_time;
+  return p;
+}
+
 }  // namespace
 
-ArmDescription load_arm_description(const fs::path& urdf, const fs::path& srdf,
-                                    const std::vector<fs::path>& package_paths) {
+ArmCollision parse_arm_collision(const std::string& text, const std::string& where) {
+  if (text == "meshes") return ArmCollision::kMeshes;
+  if (text == "spheres") return ArmCollision::kSpheres;
+  throw ParameterError(where + ": '" + text + "' is not a collision model (meshes or spheres)");
+}
+
+ArmDescription load_arm_description(const fs::path& urdf, const fs::path& srdf, const std::vector<fs::path>& package_paths,
+                                    const ArmCollisionOptions& collision) {
   ArmDescription d;
   d.urdf = urdf;
   d.srdf = srdf;
   d.model = std::make_shared<const ArmModel>(load_urdf(urdf, UrdfOptions{package_paths}));
   d.srdf_content = load_srdf(srdf);
+  if (collision.model == ArmCollision::kSpheres) {
+    d.exact_model = d.model;
+    SphereCover cover;
+    if (collision.spheres.empty()) {
+      cover = cached_cover_with_spheres(*d.exact_model, collision.cache_dir);
+    } else {
+      try {
+        cover = inflate_to_cover(*d.exact_model, load_sphere_urdf(collision.spheres, *d.exact_model), collision.spheres.string());
+      } catch (const ParameterError& e) {
+        throw FileError(collision.spheres.string() + ": " + e.what());
+      }
+    }
+    d.exact_geometry = make_arm_geometry(*d.exact_model);
+    d.model = std::make_shared<const ArmModel>(with_sphere_collision(*d.exact_model, cover.spheres));
+    d.cover = std::move(cover.links);
+  }
   d.geometry = make_arm_geometry(*d.model);
   return d;
 }
 
 Problem load_arm_problem(const ArmDescription& robot, const fs::path& scene_file, const fs::path& request_file) {
-  const ArmFiles files{robot.urdf, robot.srdf, scene_file, request_file, {}};
+  const ArmFiles files{robot.urdf, robot.srdf, scene_file, request_file, {}, {}};
   const ArmModel& model = *robot.model;
   const MoveItScene scene = load_moveit_scene(scene_file);
   const MoveItRequest request = load_moveit_request(request_file);
@@ -171,18 +201,33 @@ Problem load_arm_problem(const ArmDescription& robot, const fs::path& scene_file
                                               disabled_pairs(model, robot.srdf_content, scene));
   auto world = std::make_shared<const SpatialWorld>(scene.objects, workspace(scene, arm->reach()));
   auto env = std::make_shared<const ArmEnvironment>(world, scene.object_ids, arm, scene.allowed);
+  p.environment = env;
+  if (robot.exact_model) {
+    // The files' own geometry judges the request; a seed it accepts that the larger sphere model
+    // does not makes the problem unsolvable in that model, which its runs report.
+    const ArmKinematics exact_kinematics(robot.exact_model, arm->kinematics().group(), start_values(model, scene, request));
+    auto exact_arm = std::make_shared<const ArmRobot>(exact_kinematics, robot.exact_geometry,
+                                                      disabled_pairs(model, robot.srdf_content, scene));
+    const ArmEnvironment exact(world, scene.object_ids, exact_arm, scene.allowed);
+    check_seed(exact, p.seeds.front(), "start_state", files);
+    check_seed(exact, p.seeds.back(), "goal_constraints[0]", files);
+    for (const auto& [seed, what] : {std::pair{&p.seeds.front(), "start"}, std::pair{&p.seeds.back(), "goal"}}) {
+      const std::string contact = env->first_contact(*seed);
+      if (!contact.empty() && p.unsolvable_because.empty()) {
+        p.unsolvable_because = std::string("the ") + what + " collides in the sphere model (" + contact +
+                               ") though its meshes are free: plan with collision: meshes";
+      }
+    }
+    return finish_arm_problem(std::move(p), scene_file, request_file, request);
+  }
   check_seed(*env, p.seeds.front(), "start_state", files);
   check_seed(*env, p.seeds.back(), "goal_constraints[0]", files);
-  p.environment = env;
-  p.name = scene_file.parent_path().filename().string() + "-" + request_file.stem().string();
-  p.file = request_file;
-  p.defaults.planner = "rrt-connect";
-  if (request.allowed_planning_time > 0.0) p.defaults.time_limit_s = request.allowed_planning_time;
-  return p;
+  return finish_arm_problem(std::move(p), scene_file, request_file, request);
 }
 
 Problem load_arm_problem(const ArmFiles& files) {
-  return load_arm_problem(load_arm_description(files.urdf, files.srdf, files.package_paths), files.scene, files.request);
+  return load_arm_problem(load_arm_description(files.urdf, files.srdf, files.package_paths, files.collision), files.scene,
+                          files.request);
 }
 
 }  // namespace amp::world

@@ -1,0 +1,359 @@
+#include "world/arm/sphere_checker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "amp/core/joint_space.hpp"
+#include "world/arm/arm_geometry.hpp"
+#include "world/arm/sphere_kernels.hpp"
+#include "world/arm/sphere_scene.hpp"
+
+namespace amp::world::detail {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool is_sphere(const ArmPart& p) { return p.geometry->getNodeType() == fcl::GEOM_SPHERE; }
+
+// Element-wise maximum of rows [first, first + count) of a row-major table with n columns.
+std::vector<double> max_row(const std::vector<double>& table, std::size_t first, std::size_t count, std::size_t n) {
+  std::vector<double> row(n, 0.0);
+  for (std::size_t i = first; i < first + count; ++i) {
+    for (std::size_t k = 0; k < n; ++k) row[k] = std::max(row[k], table[i * n + k]);
+  }
+  return row;
+}
+
+std::size_t padded(std::size_t n) { return (n + kSphereLanes - 1) / kSphereLanes * kSphereLanes; }
+
+double least(const double* v, std::size_t n) { return *std::min_element(v, v + n); }
+
+}  // namespace
+
+bool sphere_checker_applies(const ArmEnvironment& env) {
+  const auto& parts = env.robot().geometry().parts;
+  return std::all_of(parts.begin(), parts.end(), is_sphere) && sphere_scene_supported(env.scene().obstacles());
+}
+
+// What a checker reads and never writes. Spheres are stored link by link in blocks padded to the
+// kernels' lane count (the padding repeats a link's last sphere). Each link has a bounding sphere
+// (the coarse level) and the obstacles it may touch; for certification, the largest per-joint motion
+// of any sphere of a link (of any sphere pair of a link pair) bounds them all at once.
+struct SphereChecker::Model {
+  struct Link {
+    int link = 0;
+    std::size_t part = 0;   // its first sphere in ArmRobot's parts (motion coefficient rows)
+    std::size_t block = 0;  // its first lane in the blocks
+    std::size_t count = 0, lanes = 0;
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    double radius = 0.0;
+    std::vector<std::size_t> obstacles;  // those the scene does not allow it to touch
+    std::vector<double> motion;          // per group joint
+    bool moves = false;
+  };
+  struct Pair {
+    std::size_t a = 0, b = 0;  // into links
+    std::size_t first = 0;     // its sphere pairs: self_part_pairs [first, first + a.count * b.count)
+    std::vector<double> motion;
+    bool moves = false;
+  };
+  std::vector<double> x, y, z, r;  // link frame, in blocks
+  std::size_t lanes = 0, widest = 0;
+  std::vector<Link> links;
+  std::vector<Pair> pairs;
+  SphereScene scene;
+  std::size_t joints = 0;
+  const SphereKernels* kernels = &sphere_kernels();
+
+  explicit Model(const ArmEnvironment& env);
+  void add_links(const ArmEnvironment& env);
+  void add_pairs(const ArmEnvironment& env);
+};
+
+SphereChecker::Model::Model(const ArmEnvironment& env) : scene(make_sphere_scene(env.scene().obstacles())) {
+  joints = static_cast<std::size_t>(env.robot().kinematics().dof());
+  add_links(env);
+  add_pairs(env);
+}
+
+void SphereChecker::Model::add_links(const ArmEnvironment& env) {
+  const auto& parts = env.robot().geometry().parts;
+  const ArmMotionCoefficients& c = env.robot().motion_coefficients();
+  for (std::size_t i = 0; i < parts.size();) {
+    Link l;
+    l.link = parts[i].link;
+    l.part = i;
+    l.block = lanes;
+    while (i < parts.size() && parts[i].link == l.link) ++i;
+    l.count = i - l.part;
+    l.lanes = padded(l.count);
+    for (std::size_t k = 0; k < l.lanes; ++k) {
+      const ArmPart& p = parts[l.part + std::min(k, l.count - 1)];
+      x.push_back(p.center.x());
+      y.push_back(p.center.y());
+      z.push_back(p.center.z());
+      r.push_back(p.radius);
+    }
+    lanes += l.lanes;
+    widest = std::max(widest, l.lanes);
+    // The bounding sphere: centred on the spheres' box, reaching the farthest sphere's far side.
+    Eigen::AlignedBox3d box;
+    for (std::size_t s = l.part; s < i; ++s) {
+      box.extend(parts[s].center - Eigen::Vector3d::Constant(parts[s].radius));
+      box.extend(parts[s].center + Eigen::Vector3d::Constant(parts[s].radius));
+    }
+    l.center = box.center();
+    for (std::size_t s = l.part; s < i; ++s) l.radius = std::max(l.radius, (parts[s].center - l.center).norm() + parts[s].radius);
+    for (std::size_t o = 0; o < scene.size(); ++o) {
+      if (!env.allowed(scene.object[o], l.link)) l.obstacles.push_back(o);
+    }
+    l.motion = max_row(c.part, l.part, l.count, joints);
+    l.moves = std::any_of(l.motion.begin(), l.motion.end(), [](double v) { return v > 0.0; });
+    links.push_back(std::move(l));
+  }
+}
+
+// ArmRobot lists the sphere pairs of each checked link pair together, in the pair's order, all
+// spheres of the first link against all of the second's.
+void SphereChecker::Model::add_pairs(const ArmEnvironment& env) {
+  const ArmMotionCoefficients& c = env.robot().motion_coefficients();
+  std::vector<int> link_slot(env.robot().model().links().size(), -1);
+  for (std::size_t i = 0; i < links.size(); ++i) link_slot[static_cast<std::size_t>(links[i].link)] = static_cast<int>(i);
+  std::size_t first = 0;
+  for (const auto& [la, lb] : env.robot().self_pairs()) {
+    Pair p;
+    p.a = static_cast<std::size_t>(link_slot[static_cast<std::size_t>(la)]);
+    p.b = static_cast<std::size_t>(link_slot[static_cast<std::size_t>(lb)]);
+    p.first = first;
+    const std::size_t count = links[p.a].count * links[p.b].count;
+    p.motion = max_row(c.pair, first, count, joints);
+    p.moves = std::any_of(p.motion.begin(), p.motion.end(), [](double v) { return v > 0.0; });
+    first += count;
+    pairs.push_back(std::move(p));
+  }
+}
+
+// Per thread: the link poses at the state last placed, the links' bounding spheres, and the world
+// centres of the links whose spheres were asked for (stamped with the placement they belong to).
+struct SphereChecker::Scratch {
+  std::vector<Eigen::Isometry3d> poses;
+  std::vector<Eigen::Vector3d> link_centers;  // per Model::Link
+  std::vector<std::uint64_t> stamp;           // per Model::Link
+  std::uint64_t placement = 0;
+  std::vector<double> world;  // x block, y block, z block
+  std::vector<double> gaps;   // one link's lanes
+  std::vector<double> steps;
+};
+
+SphereChecker::SphereChecker(const ArmEnvironment& env, core::Counters& counters)
+    : ValidityChecker(counters), env_(env), model_(std::make_shared<const Model>(env)), scratch_(std::make_unique<Scratch>()) {
+  Scratch& w = *scratch_;
+  w.poses.resize(env.robot().kinematics().link_count());
+  w.link_centers.resize(model_->links.size());
+  w.stamp.assign(model_->links.size(), 0);
+  w.world.resize(3 * model_->lanes);
+  w.gaps.resize(model_->widest);
+  w.steps.resize(model_->joints);
+}
+
+SphereChecker::~SphereChecker() = default;
+
+void SphereChecker::place(const State& s) const {
+  Scratch& w = *scratch_;
+  env_.robot().kinematics().link_poses(s, w.poses.data());
+  ++w.placement;
+  for (std::size_t i = 0; i < model_->links.size(); ++i) {
+    w.link_centers[i] = w.poses[static_cast<std::size_t>(model_->links[i].link)] * model_->links[i].center;
+  }
+}
+
+const double* SphereChecker::placed(std::size_t li) const {
+  Scratch& w = *scratch_;
+  const Model::Link& l = model_->links[li];
+  double* x = w.world.data() + l.block;
+  if (w.stamp[li] != w.placement) {
+    const Eigen::Isometry3d& pose = w.poses[static_cast<std::size_t>(l.link)];
+    double m[12];
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 3; ++col) m[row * 3 + col] = pose.linear()(row, col);
+      m[9 + row] = pose.translation()[row];
+    }
+    const Model& md = *model_;
+    md.kernels->place(m, md.x.data() + l.block, md.y.data() + l.block, md.z.data() + l.block, x, x + md.lanes,
+                      x + 2 * md.lanes, l.lanes);
+    w.stamp[li] = w.placement;
+  }
+  return x;
+}
+
+const double* SphereChecker::joint_steps(const State& a, const State& b) const {
+  const ArmModel& m = env_.robot().model();
+  const std::vector<int>& joints = env_.robot().kinematics().group().joints;
+  double* steps = scratch_->steps.data();
+  for (std::size_t k = 0; k < joints.size(); ++k) {
+    const int i = static_cast<int>(k);
+    steps[k] = m.joint(joints[k]).type == ArmJointType::kContinuous ? std::abs(core::angle_difference(a[i], b[i]))
+                                                                    : std::abs(b[i] - a[i]);
+  }
+  return steps;
+}
+
+bool SphereChecker::scene_free() const {
+  const Model& md = *model_;
+  const Scratch& w = *scratch_;
+  for (std::size_t i = 0; i < md.links.size(); ++i) {
+    const Model::Link& l = md.links[i];
+    for (const std::size_t o : l.obstacles) {
+      // The coarse level: the link's bounding sphere, first by the obstacle's bounding ball.
+      if (obstacle_beyond(md.scene, o, w.link_centers[i], l.radius)) continue;
+      if (obstacle_distance(md.scene, o, w.link_centers[i]) > l.radius) continue;
+      const double* x = placed(i);
+      md.kernels->obstacle_gaps(md.scene, o, x, x + md.lanes, x + 2 * md.lanes, md.r.data() + l.block, l.lanes,
+                                scratch_->gaps.data());
+      if (least(scratch_->gaps.data(), l.lanes) <= 0.0) return false;
+    }
+  }
+  return true;
+}
+
+bool SphereChecker::self_free() const {
+  const Model& md = *model_;
+  const Scratch& w = *scratch_;
+  for (const Model::Pair& p : md.pairs) {
+    const Model::Link &a = md.links[p.a], &b = md.links[p.b];
+    if ((w.link_centers[p.a] - w.link_centers[p.b]).norm() > a.radius + b.radius) continue;
+    const double* xa = placed(p.a);
+    const double* xb = placed(p.b);
+    for (std::size_t i = 0; i < a.count; ++i) {
+      const std::size_t ia = i;
+      md.kernels->sphere_gaps(xa[ia], xa[md.lanes + ia], xa[2 * md.lanes + ia], md.r[a.block + ia], xb, xb + md.lanes,
+                              xb + 2 * md.lanes, md.r.data() + b.block, b.lanes, scratch_->gaps.data());
+      if (least(scratch_->gaps.data(), b.lanes) <= 0.0) return false;
+    }
+  }
+  return true;
+}
+
+bool SphereChecker::check(const State& s) const {
+  place(s);
+  return scene_free() && self_free();
+}
+
+double SphereChecker::link_clearance(std::size_t li, double below) const {
+  const Model& md = *model_;
+  const Model::Link& l = md.links[li];
+  double d = below;
+  for (const std::size_t o : l.obstacles) {
+    if (obstacle_distance(md.scene, o, scratch_->link_centers[li]) - l.radius >= d) continue;
+    const double* x = placed(li);
+    md.kernels->obstacle_gaps(md.scene, o, x, x + md.lanes, x + 2 * md.lanes, md.r.data() + l.block, l.lanes,
+                              scratch_->gaps.data());
+    d = std::min(d, least(scratch_->gaps.data(), l.lanes));
+  }
+  return d;
+}
+
+Clearance SphereChecker::compute_clearance(const State& s) const {
+  place(s);
+  double d = kInf;
+  for (std::size_t i = 0; i < model_->links.size() && d > 0.0; ++i) d = link_clearance(i, d);
+  Clearance c;
+  c.distance = std::max(0.0, d);
+  return c;
+}
+
+double SphereChecker::compute_free_radius(const State& s) const {
+  double r = compute_clearance(s).distance;  // places s
+  if (r <= 0.0) return 0.0;
+  const Model& md = *model_;
+  const Scratch& w = *scratch_;
+  for (const Model::Pair& p : md.pairs) {
+    const Model::Link &a = md.links[p.a], &b = md.links[p.b];
+    // Both links may move: half their distance; the bounding spheres' gap prunes.
+    if (0.5 * ((w.link_centers[p.a] - w.link_centers[p.b]).norm() - a.radius - b.radius) >= r) continue;
+    const double* xa = placed(p.a);
+    const double* xb = placed(p.b);
+    for (std::size_t i = 0; i < a.count; ++i) {
+      md.kernels->sphere_gaps(xa[i], xa[md.lanes + i], xa[2 * md.lanes + i], md.r[a.block + i], xb, xb + md.lanes,
+                              xb + 2 * md.lanes, md.r.data() + b.block, b.lanes, scratch_->gaps.data());
+      const double d = least(scratch_->gaps.data(), b.lanes);
+      if (d <= 0.0) return 0.0;
+      r = std::min(r, 0.5 * d);
+    }
+  }
+  return r;
+}
+
+double SphereChecker::compute_motion_bound(const State& a, const State& b) const {
+  const std::vector<double>& radii = env_.robot().motion_radii();
+  return ArmMotionCoefficients::dot(radii.data(), joint_steps(a, b), static_cast<int>(radii.size()));
+}
+
+// As ArmChecker::compute_free_share (docs/arms.md, "Certification"), with spheres: sphere i is free
+// for a share d_i / v_i of the segment, d_i its clearance and v_i its motion per unit share. The
+// link's bounding sphere and largest motion bound every sphere's d_i / v_i from below, so a link
+// whose bound cannot lower the share is not looked into.
+double SphereChecker::compute_free_share(const State& s, const State& a, const State& b) const {
+  place(s);
+  const double* steps = joint_steps(a, b);
+  double share = kInf;
+  if (!scene_share(steps, share) || !self_share(steps, share)) return 0.0;
+  return share;
+}
+
+bool SphereChecker::scene_share(const double* steps, double& share) const {
+  const Model& md = *model_;
+  const Scratch& w = *scratch_;
+  const ArmMotionCoefficients& c = env_.robot().motion_coefficients();
+  const int n = static_cast<int>(md.joints);
+  double* gaps = scratch_->gaps.data();
+  // Distal links first: they move most, so their share bounds the rest soonest.
+  for (std::size_t li = md.links.size(); li-- > 0;) {
+    const Model::Link& l = md.links[li];
+    if (!l.moves) continue;  // the same all along: the state's own validity covers it
+    const double v_link = ArmMotionCoefficients::dot(l.motion.data(), steps, n);
+    for (const std::size_t o : l.obstacles) {
+      const double gap = obstacle_distance(md.scene, o, w.link_centers[li]) - l.radius;
+      if (gap > 0.0 && gap >= share * v_link) continue;
+      const double* x = placed(li);
+      md.kernels->obstacle_gaps(md.scene, o, x, x + md.lanes, x + 2 * md.lanes, md.r.data() + l.block, l.lanes, gaps);
+      for (std::size_t i = 0; i < l.count; ++i) {
+        if (gaps[i] <= 0.0) return false;
+        const double v = ArmMotionCoefficients::dot(&c.part[(l.part + i) * md.joints], steps, n);
+        if (v > 0.0) share = std::min(share, gaps[i] / v);
+      }
+    }
+  }
+  return true;
+}
+
+bool SphereChecker::self_share(const double* steps, double& share) const {
+  const Model& md = *model_;
+  const Scratch& w = *scratch_;
+  const ArmMotionCoefficients& c = env_.robot().motion_coefficients();
+  const int n = static_cast<int>(md.joints);
+  double* gaps = scratch_->gaps.data();
+  for (const Model::Pair& p : md.pairs) {
+    if (!p.moves) continue;
+    const Model::Link &a = md.links[p.a], &b = md.links[p.b];
+    const double v_pair = ArmMotionCoefficients::dot(p.motion.data(), steps, n);
+    const double gap = (w.link_centers[p.a] - w.link_centers[p.b]).norm() - a.radius - b.radius;
+    if (gap > 0.0 && gap >= share * v_pair) continue;
+    const double* xa = placed(p.a);
+    const double* xb = placed(p.b);
+    for (std::size_t i = 0; i < a.count; ++i) {
+      md.kernels->sphere_gaps(xa[i], xa[md.lanes + i], xa[2 * md.lanes + i], md.r[a.block + i], xb, xb + md.lanes,
+                              xb + 2 * md.lanes, md.r.data() + b.block, b.lanes, gaps);
+      for (std::size_t k = 0; k < b.count; ++k) {
+        if (gaps[k] <= 0.0) return false;
+        const double v = ArmMotionCoefficients::dot(&c.pair[(p.first + i * b.count + k) * md.joints], steps, n);
+        if (v > 0.0) share = std::min(share, gaps[k] / v);
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace amp::world::detail

@@ -1,0 +1,47 @@
+#pragma once
+// Private: the ValidityChecker of an ArmEnvironment whose robot is made of spheres (a sphere model,
+// amp/world/arm_spheres.hpp) in a scene of primitives. Exact sphere distances replace FCL: a link's
+// bounding sphere first (the coarse level), its spheres only where that one is close.
+#include <memory>
+#include <vector>
+
+#include "amp/world/arm_environment.hpp"
+#include "amp/world/validity_checker.hpp"
+
+namespace amp::world::detail {
+
+// Whether an environment can use SphereChecker: every robot part a sphere, every obstacle a primitive.
+bool sphere_checker_applies(const ArmEnvironment& env);
+
+class SphereChecker final : public ValidityChecker {
+ public:
+  SphereChecker(const ArmEnvironment& env, core::Counters& counters);
+  ~SphereChecker() override;
+
+ private:
+  struct Model;
+  struct Scratch;
+  bool check(const State& s) const override;
+  Clearance compute_clearance(const State& s) const override;
+  double compute_free_radius(const State& s) const override;
+  double compute_motion_bound(const State& a, const State& b) const override;
+  double compute_free_share(const State& s, const State& a, const State& b) const override;
+
+  // Poses the links and their bounding spheres; a link's spheres are placed when first asked for.
+  void place(const State& s) const;
+  const double* placed(std::size_t link) const;  // the link's block of world x (then y, z at stride)
+  const double* joint_steps(const State& a, const State& b) const;
+  bool scene_free() const;
+  bool self_free() const;
+  // free_share's halves: each lowers `share`; false when the state is not valid.
+  bool scene_share(const double* steps, double& share) const;
+  bool self_share(const double* steps, double& share) const;
+  // The least clearance of link l's spheres to the scene, if below `below` (else `below`).
+  double link_clearance(std::size_t l, double below) const;
+
+  const ArmEnvironment& env_;
+  std::shared_ptr<const Model> model_;
+  std::unique_ptr<Scratch> scratch_;
+};
+
+}  // namespace amp::world::detail
