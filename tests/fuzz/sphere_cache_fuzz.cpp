@@ -35,7 +35,7 @@ bool same(const amp::world::SphereCover& a, const amp::world::SphereCover& b) {
     }
   }
   return a.options.piece_size == b.options.piece_size && a.options.max_per_link == b.options.max_per_link &&
-         a.options.radius_ratio == b.options.radius_ratio;
+         a.options.bulge == b.options.bulge;
 }
 
 // What an accepted entry promises its users (the sphere checker indexes links with it).

@@ -25,7 +25,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 TEST(SceneRenderer, ArmDrawsTopAndFrontPanels) {
   const fs::path dir = fs::path(AMP_SOURCE_DIR) / "tests" / "data" / "arm" / "two_link";
   const world::Problem p =
-      world::load_arm_problem({dir / "two_link.urdf", dir / "two_link.srdf", dir / "scene.yaml", dir / "request.yaml", {}});
+      world::load_arm_problem({dir / "two_link.urdf", dir / "two_link.srdf", dir / "scene.yaml", dir / "request.yaml", {}, {}});
   const std::vector<State> path{p.start(), p.goal()};
   SceneOptions options;
   options.path = &path;

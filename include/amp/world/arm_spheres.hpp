@@ -24,11 +24,11 @@ struct SphereCoverOptions {
   // The solids are cut into convex pieces no longer than this (metres) before they are grouped;
   // a piece lies inside a sphere when all its corners do, which is what makes the set a cover.
   double piece_size = 0.01;
-  // Spheres per link at most; the generator stops adding spheres to a link once its largest
-  // sphere's radius is at most `radius_ratio` times the link's middle bounding-box side. 0.5 gives
-  // the Panda 59 spheres, as many as VAMP's hand-made panda_spherized.urdf.
-  int max_per_link = 12;
-  double radius_ratio = 0.5;
+  // A link's pieces are grouped in slabs across its long axis, one sphere each; the generator adds
+  // slabs until every sphere reaches at most (1 + bulge) times as far as its own slab does from the
+  // axis line through its centre, or the link has max_per_link spheres.
+  int max_per_link = 16;
+  double bulge = 0.1;
 };
 
 // How a link's spheres relate to its solids.

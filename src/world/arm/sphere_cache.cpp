@@ -1,7 +1,7 @@
 // Generated sphere sets kept on disk, keyed by what they are computed from (the options and every
 // link's solids, byte for byte), so that a robot is covered once per user rather than once per run.
 // An entry is text:
-//   amp-sphere-cover 1 <key: 16 hex> <piece_size> <max_per_link> <radius_ratio>
+//   amp-sphere-cover 1 <key: 16 hex> <piece_size> <max_per_link> <bulge>
 //   sphere <link name> <x> <y> <z> <r>                                  (one per sphere)
 //   link <link name> <spheres> <excess_bound> <sphere_volume> <box_volume> <inflation>  (one per link)
 //   end
@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 constexpr std::string_view kMagic = "amp-sphere-cover";
 constexpr std::string_view kFormatVersion = "1";
 // Part of the key: raise it when the generator changes, so that older entries are not read back.
-constexpr std::uint32_t kGeneratorVersion = 1;
+constexpr std::uint32_t kGeneratorVersion = 5;  // 3: slabs across the link until tight (sphere_cover.cpp)
 
 // 64-bit FNV-1a (Fowler, Noll, Vo): fast, and ample for telling robots apart (not an adversary).
 class Fnv1a {
@@ -75,7 +75,7 @@ std::uint64_t cache_key(const ArmModel& model, const SphereCoverOptions& o) {
   h.value(kGeneratorVersion);
   h.value(o.piece_size);
   h.value(o.max_per_link);
-  h.value(o.radius_ratio);
+  h.value(o.bulge);
   h.value(model.links().size());
   for (const ArmLink& l : model.links()) {
     h.text(l.name);
@@ -128,7 +128,7 @@ bool header(std::string_view line, std::uint64_t& key, SphereCoverOptions& o) {
   const auto [end, ec] = std::from_chars(f[2].data(), f[2].data() + f[2].size(), key, 16);
   if (ec != std::errc() || end != f[2].data() + f[2].size() || hex(key) != f[2]) return false;
   return finite_number(f[3], o.piece_size) && o.piece_size > 0.0 && canonical_int(f[4], o.max_per_link) && o.max_per_link >= 1 &&
-         finite_number(f[5], o.radius_ratio) && o.radius_ratio > 0.0;
+         finite_number(f[5], o.bulge) && o.bulge >= 0.0;
 }
 
 // A link named in the entry: one of the model's, with collision geometry.
@@ -204,7 +204,7 @@ bool read_entry(const fs::path& file, const ArmModel& model, const SphereCoverOp
   if (!parse_entry(text, model, cover)) return false;
   const SphereCoverOptions& stored = cover.options;
   if (stored.piece_size != options.piece_size || stored.max_per_link != options.max_per_link ||
-      stored.radius_ratio != options.radius_ratio) {
+      stored.bulge != options.bulge) {
     return false;
   }
   out = std::move(cover);
@@ -246,7 +246,7 @@ std::filesystem::path default_sphere_cache_dir() {
 std::string format_sphere_cache(const SphereCover& cover, const ArmModel& model) {
   const SphereCoverOptions& o = cover.options;
   std::string out = std::string(kMagic) + " " + std::string(kFormatVersion) + " " + hex(cache_key(model, o)) + " " + num(o.piece_size) +
-                    " " + std::to_string(o.max_per_link) + " " + num(o.radius_ratio) + "\n";
+                    " " + std::to_string(o.max_per_link) + " " + num(o.bulge) + "\n";
   for (const LinkSphere& s : cover.spheres) {
     out += "sphere " + model.link(s.link).name + " " + num(s.center.x()) + " " + num(s.center.y()) + " " + num(s.center.z()) + " " +
            num(s.radius) + "\n";

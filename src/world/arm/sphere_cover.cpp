@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "amp/core/error.hpp"
 #include "amp/world/arm_spheres.hpp"
 #include "sphere_pieces.hpp"
@@ -28,6 +30,9 @@ constexpr double kAbsoluteMargin = 1e-9;  // metres
 constexpr int kLloydIterations = 10;
 // Badoiu-Clarkson steps refining a group's centre from its bounding-box centre (the best is kept).
 constexpr int kCentreSteps = 16;
+// How much distances across a link count, against along it, when its pieces are grouped
+// (squeezed_across). Changing the generator means raising kGeneratorVersion in sphere_cache.cpp.
+constexpr double kAcrossWeight = 0.3;
 
 double padded(double radius) { return radius * (1.0 + kRelativeMargin) + kAbsoluteMargin; }
 
@@ -36,8 +41,8 @@ void validate(const SphereCoverOptions& o) {
     throw ParameterError("sphere cover: piece_size must be positive, got " + std::to_string(o.piece_size));
   }
   if (o.max_per_link < 1) throw ParameterError("sphere cover: max_per_link must be at least 1, got " + std::to_string(o.max_per_link));
-  if (!(o.radius_ratio > 0.0) || !std::isfinite(o.radius_ratio)) {
-    throw ParameterError("sphere cover: radius_ratio must be positive, got " + std::to_string(o.radius_ratio));
+  if (!(o.bulge >= 0.0) || !std::isfinite(o.bulge)) {
+    throw ParameterError("sphere cover: bulge must be a non-negative number, got " + std::to_string(o.bulge));
   }
 }
 
@@ -131,43 +136,66 @@ LinkSphere enclose(const std::vector<Eigen::Vector3d>& corners, int link) {
   return best;
 }
 
-std::vector<LinkSphere> groups_enclosed(const LinkPieces& p, const std::vector<int>& group, int k, int link) {
-  std::vector<std::vector<Eigen::Vector3d>> corners(static_cast<std::size_t>(k));
-  for (int i = 0; i < p.count(); ++i) {
-    auto& g = corners[static_cast<std::size_t>(group[static_cast<std::size_t>(i)])];
-    g.insert(g.end(), p.piece(i).begin(), p.piece(i).end());
+
+// The link's long axis (principal axis of its piece centroids) and the frame that squeezes
+// distances across it. Pieces grouped by plain k-means become patches of the surface, and a patch's
+// ball bulges out of the solid by nearly its radius; grouped with distances across the axis shrunk,
+// they become slabs across the link, whose balls are centred inside it and bulge out little.
+struct LinkAxis {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  Eigen::Vector3d along = Eigen::Vector3d::UnitZ();
+  Eigen::Matrix3d squeeze = Eigen::Matrix3d::Identity();
+};
+
+LinkAxis link_axis(const std::vector<Eigen::Vector3d>& pts) {
+  LinkAxis a;
+  for (const Eigen::Vector3d& q : pts) a.mean += q;
+  a.mean /= static_cast<double>(pts.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& q : pts) cov += (q - a.mean) * (q - a.mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(cov);  // eigenvalues ascending
+  a.along = pca.eigenvectors().col(2);
+  a.squeeze = pca.eigenvectors().transpose();
+  a.squeeze.row(0) *= kAcrossWeight;
+  a.squeeze.row(1) *= kAcrossWeight;
+  return a;
+}
+
+// A slab's ball is as tight as it gets when its radius is close to the farthest its corners lie
+// from the axis line through its centre: what is left beyond that is the ball's reach along the
+// axis, which more slabs shrink.
+bool tight(const LinkSphere& s, const std::vector<Eigen::Vector3d>& corners, const Eigen::Vector3d& along, double bulge) {
+  double across = 0.0;
+  for (const Eigen::Vector3d& c : corners) {
+    const Eigen::Vector3d d = c - s.center;
+    across = std::max(across, (d - d.dot(along) * along).norm());
   }
-  std::vector<LinkSphere> out;
-  for (const auto& g : corners) {
-    if (!g.empty()) out.push_back(enclose(g, link));
-  }
-  return out;
+  return s.radius <= (1.0 + bulge) * across;
 }
 
-double middle_side(const LinkPieces& p) {
-  Eigen::AlignedBox3d box;
-  for (const Eigen::Vector3d& c : p.corners) box.extend(c);
-  Eigen::Vector3d side = box.sizes();
-  std::sort(side.data(), side.data() + 3);
-  return side[1];
-}
-
-double largest_radius(const std::vector<LinkSphere>& s) {
-  double r = 0.0;
-  for (const LinkSphere& x : s) r = std::max(r, x.radius);
-  return r;
-}
-
-// One sphere per k-means group, for k = 1, 2, ... until the largest is small enough for the link.
+// One sphere per group of pieces, for k = 1, 2, ... groups until every sphere is tight.
 std::vector<LinkSphere> cover_pieces(const LinkPieces& p, const SphereCoverOptions& o, int link) {
   if (p.count() == 0) return {};
-  const std::vector<Eigen::Vector3d> pts = centroids(p);
-  const double enough = o.radius_ratio * middle_side(p);
+  std::vector<Eigen::Vector3d> pts = centroids(p);
+  const LinkAxis axis = link_axis(pts);
+  for (Eigen::Vector3d& q : pts) q = axis.squeeze * (q - axis.mean);
   const int most = std::min(o.max_per_link, p.count());
   std::vector<LinkSphere> out;
   for (int k = 1; k <= most; ++k) {
-    out = groups_enclosed(p, k_means(pts, k), k, link);
-    if (largest_radius(out) <= enough) break;
+    const std::vector<int> group = k_means(pts, k);
+    std::vector<std::vector<Eigen::Vector3d>> corners(static_cast<std::size_t>(k));
+    for (int i = 0; i < p.count(); ++i) {
+      auto& g = corners[static_cast<std::size_t>(group[static_cast<std::size_t>(i)])];
+      g.insert(g.end(), p.piece(i).begin(), p.piece(i).end());
+    }
+    out.clear();
+    bool all_tight = true;
+    for (const auto& g : corners) {
+      if (g.empty()) continue;
+      out.push_back(enclose(g, link));
+      all_tight = all_tight && tight(out.back(), g, axis.along, o.bulge);
+    }
+    if (all_tight) break;
   }
   return out;
 }

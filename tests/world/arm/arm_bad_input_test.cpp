@@ -41,7 +41,7 @@ class ArmBadInput : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  ArmFiles files() const { return {dir_ / "two_link.urdf", dir_ / "two_link.srdf", dir_ / "scene.yaml", dir_ / "request.yaml", {}}; }
+  ArmFiles files() const { return {dir_ / "two_link.urdf", dir_ / "two_link.srdf", dir_ / "scene.yaml", dir_ / "request.yaml", {}, {}}; }
   // Replaces the one occurrence of `from` in the copy of `name` by `to`.
   void edit(const std::string& name, const std::string& from, const std::string& to) const {
     std::string text = read(dir_ / name);

@@ -44,7 +44,7 @@ void expect_row(const std::vector<double>& got, const std::vector<double>& want,
 // box, link1 box (0.5 x 0.1 x 0.1 centred at (0.25, 0, 0.05)), link2 cylinder, link3 box, tool sphere.
 TEST(ArmFreeShare, CoefficientsByHand) {
   const fs::path dir = fs::path(AMP_SOURCE_DIR) / "tests" / "data" / "arm" / "two_link";
-  const Problem p = load_arm_problem({dir / "two_link.urdf", dir / "two_link.srdf", dir / "scene.yaml", dir / "request.yaml", {}});
+  const Problem p = load_arm_problem({dir / "two_link.urdf", dir / "two_link.srdf", dir / "scene.yaml", dir / "request.yaml", {}, {}});
   const ArmRobot& robot = robot_of(p);
   ASSERT_EQ(robot.kinematics().dof(), 3);
   ASSERT_EQ(robot.part_count(), 5u);

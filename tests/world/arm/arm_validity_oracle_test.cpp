@@ -60,7 +60,7 @@ TEST_P(ArmValidityOracle, IsValidEqualsIndependentCheck) {
   const ArmDescription robot = load_arm_description(panda_dir() / "panda.urdf", panda_dir() / "panda.srdf");
   for (int i = 1; i <= kScenesPerFamily; ++i) {
     const ArmFiles files{panda_dir() / "panda.urdf", panda_dir() / "panda.srdf", family / ("scene" + test::scene_number(i) + ".yaml"),
-                         family / ("request" + test::scene_number(i) + ".yaml"), {}};
+                         family / ("request" + test::scene_number(i) + ".yaml"), {}, {}};
     const auto load_started = std::chrono::steady_clock::now();
     const Problem problem = load_arm_problem(robot, files.scene, files.request);
     loading += std::chrono::duration<double>(std::chrono::steady_clock::now() - load_started).count();

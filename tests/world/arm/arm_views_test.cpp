@@ -22,7 +22,7 @@ constexpr double kTol = 1e-9;
 
 ArmFiles files() {
   const fs::path dir = fs::path(AMP_SOURCE_DIR) / "tests" / "data" / "arm" / "two_link";
-  return {dir / "two_link.urdf", dir / "two_link.srdf", dir / "scene.yaml", dir / "request.yaml", {}};
+  return {dir / "two_link.urdf", dir / "two_link.srdf", dir / "scene.yaml", dir / "request.yaml", {}, {}};
 }
 
 // The bounding box of every polygon vertex and circle of `shapes`.

@@ -315,7 +315,7 @@ TEST_F(PandaSpheres, LinkWithSolidsButNoSphereIsRefused) {
 
 TEST(SphereCover, BoxCylinderAndSphereSolidsAreCovered) {
   const ArmModel model = primitives_arm();
-  const SphereCoverOptions options{.piece_size = 0.01, .max_per_link = 6, .radius_ratio = 0.5};
+  const SphereCoverOptions options{.piece_size = 0.01, .max_per_link = 6, .bulge = 0.1};
   const SphereCover cover = cover_with_spheres(model, options);
   expect_cover(model, cover.spheres);
   expect_tight(model, cover, options.max_per_link);

@@ -37,7 +37,7 @@ constexpr double kTight = 1e-12;
 fs::path data_dir() { return fs::path(AMP_SOURCE_DIR) / "tests" / "data" / "arm" / "two_link"; }
 
 ArmFiles files() {
-  return {data_dir() / "two_link.urdf", data_dir() / "two_link.srdf", data_dir() / "scene.yaml", data_dir() / "request.yaml", {}};
+  return {data_dir() / "two_link.urdf", data_dir() / "two_link.srdf", data_dir() / "scene.yaml", data_dir() / "request.yaml", {}, {}};
 }
 
 Eigen::Matrix3d rz(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
@@ -241,7 +241,7 @@ class TwoLinkFiles : public ::testing::Test {
     for (const char* f : {"two_link.urdf", "two_link.srdf", "scene.yaml", "request.yaml"}) fs::copy_file(data_dir() / f, dir_ / f);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  ArmFiles files() const { return {dir_ / "two_link.urdf", dir_ / "two_link.srdf", dir_ / "scene.yaml", dir_ / "request.yaml", {}}; }
+  ArmFiles files() const { return {dir_ / "two_link.urdf", dir_ / "two_link.srdf", dir_ / "scene.yaml", dir_ / "request.yaml", {}, {}}; }
   void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
 
   fs::path dir_;
