@@ -84,6 +84,10 @@ int run_plan(const PlanOptions& o) {
   if (run.record.status == core::PlanStatus::kError) {
     throw Error(planner + " failed: " + run.record.message);
   }
+  if (!solved && !problem.unsolvable_because.empty()) {
+    std::cerr << "amp: no solution: unsolvable: " << problem.unsolvable_because << '\n';
+    return kExitNotSolved;
+  }
   if (!solved) {
     std::cerr << "amp: no solution: " << core::to_string(run.record.status) << " (time limit " << time_limit
               << " s, "

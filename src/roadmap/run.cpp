@@ -99,6 +99,7 @@ RunOutcome execute_run(const world::Problem& problem, const std::string& planner
   r.edges = result.edges;
   r.components = result.components;
   r.extra = std::move(result.extra);
+  for (const auto& [key, value] : problem.record_extra) r.extra[key] = value;
   if (result.status == core::PlanStatus::kSolved) {
     r.path_states = result.path.size();
     r.path_length = path_length(*problem.space, result.path);

@@ -79,3 +79,33 @@ def test_an_arm_problem_plans_from_moveit_files_and_repeats():
         amp.load_arm_problem(str(panda / "panda.urdf"), str(panda / "panda.srdf"),
                              str(panda / "scenes" / "box" / "scene0001.yaml"),
                              str(PROBLEMS / "arms" / "no-such-request.yaml"))
+
+
+def test_load_problem_chooses_an_arms_collision_model(tmp_path, monkeypatch):
+    monkeypatch.setenv("AMP_CACHE_DIR", str(tmp_path / "cache"))  # generated spheres: not the user's cache
+    panda = pathlib.Path(os.environ["AMP_SOURCE_DIR"]).parent / "shared" / "mbm" / "panda"
+
+    def arm_file(family, number):
+        problem = tmp_path / ("%s-%s.yaml" % (family, number))
+        problem.write_text("urdf: %s\nsrdf: %s\nscene: %s\nrequest: %s\n" % (
+            panda / "panda.urdf", panda / "panda.srdf", panda / "problems" / family / ("scene%s.yaml" % number),
+            panda / "problems" / family / ("request%s.yaml" % number)))
+        return str(problem)
+
+    box = arm_file("box", "0001")
+    amp.load_problem(box)
+    assert not (tmp_path / "cache").exists()  # meshes by default: no spheres made
+    problem = amp.load_problem(box, collision="spheres")
+    assert list((tmp_path / "cache").iterdir())  # the spheres were generated and cached
+    record, path = amp.plan(problem, planner="rrt-connect", seed=1, time_limit=30.0)
+    assert record["status"] == "solved"
+    assert list(path[0]) == pytest.approx(problem.start) and list(path[-1]) == pytest.approx(problem.goal)
+    # table_pick 0003's goal is free on the meshes but collides in the generated sphere model.
+    goal_in_spheres = arm_file("table_pick", "0003")
+    amp.load_problem(goal_in_spheres)
+    record, path = amp.plan(amp.load_problem(goal_in_spheres, collision="spheres"), planner="rrt-connect")
+    assert record["status"] == "unsolvable" and "sphere model" in record["message"] and len(path) == 0
+    with pytest.raises(amp.Error, match="collision.*'cubes'"):
+        amp.load_problem(box, collision="cubes")
+    with pytest.raises(amp.Error, match="walls.yaml.*arm problem"):
+        amp.load_problem(str(PROBLEMS / "walls.yaml"), collision="spheres")

@@ -88,6 +88,13 @@ class ArmEnvironment final : public Environment {
   std::unique_ptr<ValidityChecker> make_fcl_checker(core::Counters& counters) const;
   // Whether make_checker gives the sphere checker.
   bool sphere_checked() const { return sphere_checked_; }
+  // The sphere checker on a chosen build of its SIMD kernels (kAuto: the CPU's best, as
+  // make_checker); both builds give the same answers, which tests compare. Throws ParameterError
+  // when !sphere_checked().
+  enum class SphereIsa { kAuto, kBaseline, kAvx2 };
+  std::unique_ptr<ValidityChecker> make_sphere_checker(core::Counters& counters, SphereIsa isa) const;
+  // The build kAuto runs on this CPU: "avx2", or "baseline" where the CPU lacks AVX2.
+  static const char* sphere_kernels_in_use();
   Eigen::AlignedBox3d workspace_bounds() const override { return scene_->bounds(); }
   Outline obstacle_outline() const override;
   Shapes2d robot_outline(const State& s) const override;

@@ -44,6 +44,9 @@ struct Problem {
   // arm's sphere cover is larger than its meshes, docs/arms.md "Sphere model"): says which seed
   // and what it touches. Every run then reports kUnsolvable with it, without planning.
   std::string unsolvable_because;
+  // Figures about the model that every run's record carries in its `extra` (an arm's sphere model:
+  // `spheres`, and `sphere_kernels_avx2` 1 or 0 for the SIMD build the CPU runs).
+  std::map<std::string, double> record_extra;
 
   const State& start() const { return seeds.front(); }
   const State& goal() const { return seeds.back(); }

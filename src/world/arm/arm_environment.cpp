@@ -1,7 +1,9 @@
 #include "amp/world/arm_environment.hpp"
 
+#include "amp/core/error.hpp"
 #include "world/arm/arm_checker.hpp"
 #include "world/arm/sphere_checker.hpp"
+#include "world/arm/sphere_kernels.hpp"
 #include "world/spatial/projection.hpp"
 
 namespace amp::world {
@@ -24,9 +26,19 @@ bool ArmEnvironment::allowed(std::size_t object, int link) const {
 }
 
 std::unique_ptr<ValidityChecker> ArmEnvironment::make_checker(core::Counters& counters) const {
-  if (sphere_checked_) return std::make_unique<detail::SphereChecker>(*this, counters);
+  if (sphere_checked_) return std::make_unique<detail::SphereChecker>(*this, counters, detail::sphere_kernels());
   return make_fcl_checker(counters);
 }
+
+std::unique_ptr<ValidityChecker> ArmEnvironment::make_sphere_checker(core::Counters& counters, SphereIsa isa) const {
+  if (!sphere_checked_) throw ParameterError("arm: the sphere checker needs a robot of spheres in a scene of primitives");
+  const detail::SphereKernels& kernels = isa == SphereIsa::kBaseline ? detail::sphere_kernels_baseline()
+                                         : isa == SphereIsa::kAvx2   ? detail::sphere_kernels_avx2()
+                                                                     : detail::sphere_kernels();
+  return std::make_unique<detail::SphereChecker>(*this, counters, kernels);
+}
+
+const char* ArmEnvironment::sphere_kernels_in_use() { return detail::sphere_kernels().name; }
 
 std::unique_ptr<ValidityChecker> ArmEnvironment::make_fcl_checker(core::Counters& counters) const {
   const std::lock_guard<std::mutex> lock(make_mutex_);

@@ -203,6 +203,8 @@ Problem load_arm_problem(const ArmDescription& robot, const fs::path& scene_file
   auto env = std::make_shared<const ArmEnvironment>(world, scene.object_ids, arm, scene.allowed);
   p.environment = env;
   if (robot.exact_model) {
+    p.record_extra["spheres"] = static_cast<double>(arm->part_count());
+    p.record_extra["sphere_kernels_avx2"] = std::string(ArmEnvironment::sphere_kernels_in_use()) == "avx2" ? 1.0 : 0.0;
     // The files' own geometry judges the request; a seed it accepts that the larger sphere model
     // does not makes the problem unsolvable in that model, which its runs report.
     const ArmKinematics exact_kinematics(robot.exact_model, arm->kinematics().group(), start_values(model, scene, request));

@@ -65,14 +65,15 @@ struct SphereChecker::Model {
   std::vector<Pair> pairs;
   SphereScene scene;
   std::size_t joints = 0;
-  const SphereKernels* kernels = &sphere_kernels();
+  const SphereKernels* kernels = nullptr;
 
-  explicit Model(const ArmEnvironment& env);
+  Model(const ArmEnvironment& env, const SphereKernels& k);
   void add_links(const ArmEnvironment& env);
   void add_pairs(const ArmEnvironment& env);
 };
 
-SphereChecker::Model::Model(const ArmEnvironment& env) : scene(make_sphere_scene(env.scene().obstacles())) {
+SphereChecker::Model::Model(const ArmEnvironment& env, const SphereKernels& k)
+    : scene(make_sphere_scene(env.scene().obstacles())), kernels(&k) {
   joints = static_cast<std::size_t>(env.robot().kinematics().dof());
   add_links(env);
   add_pairs(env);
@@ -147,8 +148,8 @@ struct SphereChecker::Scratch {
   std::vector<double> steps;
 };
 
-SphereChecker::SphereChecker(const ArmEnvironment& env, core::Counters& counters)
-    : ValidityChecker(counters), env_(env), model_(std::make_shared<const Model>(env)), scratch_(std::make_unique<Scratch>()) {
+SphereChecker::SphereChecker(const ArmEnvironment& env, core::Counters& counters, const SphereKernels& kernels)
+    : ValidityChecker(counters), env_(env), model_(std::make_shared<const Model>(env, kernels)), scratch_(std::make_unique<Scratch>()) {
   Scratch& w = *scratch_;
   w.poses.resize(env.robot().kinematics().link_count());
   w.link_centers.resize(model_->links.size());
@@ -223,7 +224,8 @@ bool SphereChecker::self_free() const {
   const Scratch& w = *scratch_;
   for (const Model::Pair& p : md.pairs) {
     const Model::Link &a = md.links[p.a], &b = md.links[p.b];
-    if ((w.link_centers[p.a] - w.link_centers[p.b]).norm() > a.radius + b.radius) continue;
+    const double reach = a.radius + b.radius;
+    if ((w.link_centers[p.a] - w.link_centers[p.b]).squaredNorm() > reach * reach) continue;
     const double* xa = placed(p.a);
     const double* xb = placed(p.b);
     for (std::size_t i = 0; i < a.count; ++i) {
@@ -315,8 +317,10 @@ bool SphereChecker::scene_share(const double* steps, double& share) const {
     if (!l.moves) continue;  // the same all along: the state's own validity covers it
     const double v_link = ArmMotionCoefficients::dot(l.motion.data(), steps, n);
     for (const std::size_t o : l.obstacles) {
+      const double enough = share * v_link;  // a gap this wide cannot lower the share
+      if (enough < kInf && obstacle_beyond(md.scene, o, w.link_centers[li], l.radius + enough)) continue;
       const double gap = obstacle_distance(md.scene, o, w.link_centers[li]) - l.radius;
-      if (gap > 0.0 && gap >= share * v_link) continue;
+      if (gap > 0.0 && gap >= enough) continue;
       const double* x = placed(li);
       md.kernels->obstacle_gaps(md.scene, o, x, x + md.lanes, x + 2 * md.lanes, md.r.data() + l.block, l.lanes, gaps);
       for (std::size_t i = 0; i < l.count; ++i) {
@@ -339,7 +343,10 @@ bool SphereChecker::self_share(const double* steps, double& share) const {
     if (!p.moves) continue;
     const Model::Link &a = md.links[p.a], &b = md.links[p.b];
     const double v_pair = ArmMotionCoefficients::dot(p.motion.data(), steps, n);
-    const double gap = (w.link_centers[p.a] - w.link_centers[p.b]).norm() - a.radius - b.radius;
+    const double reach = a.radius + b.radius + share * v_pair;
+    const double apart = (w.link_centers[p.a] - w.link_centers[p.b]).squaredNorm();
+    if (reach < kInf && apart > reach * reach) continue;  // cannot lower the share, without a root
+    const double gap = std::sqrt(apart) - a.radius - b.radius;
     if (gap > 0.0 && gap >= share * v_pair) continue;
     const double* xa = placed(p.a);
     const double* xb = placed(p.b);

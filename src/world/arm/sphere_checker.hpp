@@ -10,12 +10,14 @@
 
 namespace amp::world::detail {
 
+struct SphereKernels;
+
 // Whether an environment can use SphereChecker: every robot part a sphere, every obstacle a primitive.
 bool sphere_checker_applies(const ArmEnvironment& env);
 
 class SphereChecker final : public ValidityChecker {
  public:
-  SphereChecker(const ArmEnvironment& env, core::Counters& counters);
+  SphereChecker(const ArmEnvironment& env, core::Counters& counters, const SphereKernels& kernels);
   ~SphereChecker() override;
 
  private:

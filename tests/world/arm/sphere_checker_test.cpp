@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "amp/core/counters.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/roadmap/local_planners/edge_certifier.hpp"
@@ -32,6 +34,16 @@ fs::path cache_dir() {
   }();
   return dir;
 }
+
+// Removes the cache when the tests end.
+class CacheCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(cache_dir(), ec);
+  }
+};
+const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new CacheCleanup);
 
 const ArmDescription& sphere_robot() {
   static const ArmDescription robot = load_arm_description(
