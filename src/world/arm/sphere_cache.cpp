@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 constexpr std::string_view kMagic = "amp-sphere-cover";
 constexpr std::string_view kFormatVersion = "1";
 // Part of the key: raise it when the generator changes, so that older entries are not read back.
-constexpr std::uint32_t kGeneratorVersion = 5;  // 3: slabs across the link until tight (sphere_cover.cpp)
+constexpr std::uint32_t kGeneratorVersion = 6;  // 6: a piece budget per link (sphere_pieces.hpp)
 
 // 64-bit FNV-1a (Fowler, Noll, Vo): fast, and ample for telling robots apart (not an adversary).
 class Fnv1a {

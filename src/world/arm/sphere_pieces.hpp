@@ -19,6 +19,11 @@ namespace amp::world::detail {
 // the pieces of that solid are larger than asked, which keeps the cover and only loosens it.
 constexpr int kMaxSplitDepth = 8;                    // a triangle becomes at most 4^8 pieces
 constexpr std::size_t kMaxCellsPerSolid = 1u << 15;  // box and cylinder grid cells
+// Pieces per link at most: a link of many large triangles is cut coarser (larger pieces still make
+// a cover, a looser one) rather than into tens of millions of pieces. The Panda's largest link
+// makes about 60,000.
+constexpr double kMaxPiecesPerLink = 1 << 20;
+constexpr double kCoarser = 1.25;
 
 // A sphere solid: kept whole, it needs no pieces.
 struct Ball {
@@ -127,7 +132,36 @@ inline void add_solid(const Solid& solid, double size, LinkPieces& out) {
   }
 }
 
+// How many pieces add_solid makes of `solids` at `size`, without making them: a triangle whose
+// longest edge is L is split ceil(log2(L / size)) levels deep (each halves every edge), capped.
+inline double piece_count(const std::vector<Solid>& solids, double size) {
+  double n = 0.0;
+  for (const Solid& s : solids) {
+    if (s.kind == Solid::Kind::kSphere) continue;
+    if (s.kind != Solid::Kind::kMesh) {
+      n += static_cast<double>(kMaxCellsPerSolid);  // an upper bound is enough here
+      continue;
+    }
+    const auto& v = s.mesh->vertices;
+    for (const Eigen::Vector3i& t : s.mesh->triangles) {
+      const Eigen::Vector3d &a = v[static_cast<std::size_t>(t[0])], &b = v[static_cast<std::size_t>(t[1])],
+                            &c = v[static_cast<std::size_t>(t[2])];
+      const double longest = std::sqrt(std::max({(a - b).squaredNorm(), (b - c).squaredNorm(), (c - a).squaredNorm()}));
+      const double levels = longest <= size ? 0.0 : std::min<double>(kMaxSplitDepth, std::ceil(std::log2(longest / size)));
+      n += std::pow(4.0, levels);
+    }
+  }
+  return n;
+}
+
 inline LinkPieces cut_into_pieces(const std::vector<Solid>& solids, double size) {
+  // Coarser only while that cuts the count: tiny triangles are one piece each at any size.
+  for (double n = piece_count(solids, size); n > kMaxPiecesPerLink;) {
+    const double coarser = piece_count(solids, size * kCoarser);
+    if (coarser >= n) break;
+    size *= kCoarser;
+    n = coarser;
+  }
   LinkPieces out;
   for (const Solid& s : solids) add_solid(s, size, out);
   return out;
