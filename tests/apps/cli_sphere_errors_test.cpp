@@ -1,7 +1,7 @@
 // `amp plan` choosing an arm's collision model (`--collision meshes|spheres`, `--spheres FILE`,
 // docs/arms.md "Sphere model"): bad choices end with exit code 1 and one stderr line naming the
 // option, file or link; good ones plan the shared Panda's box problem. Generated spheres go to a
-// cache in the test's scratch directory ($AMP_CACHE_DIR), never the user's.
+// cache the tests share in the build tree ($AMP_CACHE_DIR, support/sphere_test_cache.hpp), never the user's.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_errors_fixture.hpp"
+#include "support/sphere_test_cache.hpp"
 
 namespace {
 
@@ -42,7 +43,9 @@ class CliSpheres : public CliErrors {
  protected:
   void SetUp() override {
     CliErrors::SetUp();
-    ::setenv("AMP_CACHE_DIR", (dir_ / "cache").c_str(), 1);  // inherited by the amp that run() starts
+    // Inherited by the amp that run() starts: the tests' shared cache, never the user's; the test
+    // that sees the entry written points it at its own folder.
+    ::setenv("AMP_CACHE_DIR", amp::test::shared_sphere_cache().c_str(), 1);
   }
   void TearDown() override {
     ::unsetenv("AMP_CACHE_DIR");
@@ -99,6 +102,7 @@ TEST_F(CliSpheres, MeshesWithASpheresFileOverAProblemFile) {
 // ---- good choices plan
 
 TEST_F(CliSpheres, GeneratedSpheresSolveTheBoxProblem) {
+  ::setenv("AMP_CACHE_DIR", (dir_ / "cache").c_str(), 1);
   const RunResult r = run("plan " + panda_box_flags() + " --collision spheres --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);

@@ -16,6 +16,7 @@
 #include "amp/roadmap/local_planners/edge_certifier.hpp"
 #include "amp/roadmap/local_planners/straight_line_planner.hpp"
 #include "amp/world/arm_problem.hpp"
+#include "support/sphere_test_cache.hpp"
 
 using amp::test::g_allocations;
 
@@ -26,12 +27,9 @@ namespace fs = std::filesystem;
 
 TEST(SphereCheckerAllocation, HotCallsAllocateNothing) {
   const fs::path panda = fs::path(AMP_SOURCE_DIR) / ".." / "shared" / "mbm" / "panda";
-  const fs::path cache = fs::temp_directory_path() / ("amp-sphere-alloc-test-" + std::to_string(::getpid()));
   ArmFiles files{panda / "panda.urdf", panda / "panda.srdf", panda / "problems" / "box" / "scene0001.yaml",
-                 panda / "problems" / "box" / "request0001.yaml", {}, {ArmCollision::kSpheres, {}, cache}};
+                 panda / "problems" / "box" / "request0001.yaml", {}, {ArmCollision::kSpheres, {}, test::shared_sphere_cache()}};
   const Problem p = load_arm_problem(files);
-  std::error_code ec;
-  fs::remove_all(cache, ec);
   core::Counters counters;
   const auto checker = p.environment->make_checker(counters);
   roadmap::EdgeCertifier certifier(*p.space, *checker);

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 
 #include "amp/core/counters.hpp"
 #include "amp/core/rng.hpp"
@@ -17,6 +16,7 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/world/arm_environment.hpp"
 #include "amp/world/arm_problem.hpp"
+#include "support/sphere_test_cache.hpp"
 
 namespace amp::world {
 namespace {
@@ -25,29 +25,9 @@ namespace fs = std::filesystem;
 
 fs::path panda_dir() { return fs::path(AMP_SOURCE_DIR) / ".." / "shared" / "mbm" / "panda"; }
 
-// A fresh cache per test binary run: the generated spheres, not a stale entry, are what is tested.
-fs::path cache_dir() {
-  static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("amp-sphere-checker-test-" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    return d;
-  }();
-  return dir;
-}
-
-// Removes the cache when the tests end.
-class CacheCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(cache_dir(), ec);
-  }
-};
-const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new CacheCleanup);
-
 const ArmDescription& sphere_robot() {
   static const ArmDescription robot = load_arm_description(
-      panda_dir() / "panda.urdf", panda_dir() / "panda.srdf", {}, ArmCollisionOptions{ArmCollision::kSpheres, {}, cache_dir()});
+      panda_dir() / "panda.urdf", panda_dir() / "panda.srdf", {}, ArmCollisionOptions{ArmCollision::kSpheres, {}, test::shared_sphere_cache()});
   return robot;
 }
 

@@ -20,6 +20,7 @@
 #include "amp/core/error.hpp"
 #include "amp/world/arm_model.hpp"
 #include "amp/world/arm_spheres.hpp"
+#include "support/sphere_test_cache.hpp"
 
 namespace amp::world {
 namespace {
@@ -237,7 +238,7 @@ class PandaSpheres : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     model_ = std::make_unique<ArmModel>(load_urdf(panda_dir() / "panda.urdf"));
-    cover_ = std::make_unique<SphereCover>(cover_with_spheres(*model_));
+    cover_ = std::make_unique<SphereCover>(cached_cover_with_spheres(*model_, test::shared_sphere_cache()));
   }
   static void TearDownTestSuite() { model_.reset(), cover_.reset(); }
   static inline std::unique_ptr<ArmModel> model_;

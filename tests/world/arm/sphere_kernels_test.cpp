@@ -3,7 +3,6 @@
 // drawn Panda configurations and segments of the shared MotionBenchMaker scenes; the build chosen
 // for this CPU is the one it can run; and only a robot of spheres gets a sphere checker.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cstdint>
@@ -17,6 +16,7 @@
 #include "amp/core/rng.hpp"
 #include "amp/world/arm_environment.hpp"
 #include "amp/world/arm_problem.hpp"
+#include "support/sphere_test_cache.hpp"
 
 namespace amp::world {
 namespace {
@@ -36,29 +36,9 @@ bool cpu_has_avx2() {
 
 fs::path panda_dir() { return fs::path(AMP_SOURCE_DIR) / ".." / "shared" / "mbm" / "panda"; }
 
-// A fresh cache per test binary run, so the spheres are generated here, not read from a stale entry.
-fs::path cache_dir() {
-  static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("amp-sphere-kernels-test-" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    return d;
-  }();
-  return dir;
-}
-
-// Removes the cache when the tests are done, before the statics above go.
-class RemoveCache : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(cache_dir(), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kRemoveCache = ::testing::AddGlobalTestEnvironment(new RemoveCache);
-
 const ArmDescription& sphere_robot() {
   static const ArmDescription robot = load_arm_description(
-      panda_dir() / "panda.urdf", panda_dir() / "panda.srdf", {}, ArmCollisionOptions{ArmCollision::kSpheres, {}, cache_dir()});
+      panda_dir() / "panda.urdf", panda_dir() / "panda.srdf", {}, ArmCollisionOptions{ArmCollision::kSpheres, {}, test::shared_sphere_cache()});
   return robot;
 }
 

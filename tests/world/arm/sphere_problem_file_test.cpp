@@ -17,6 +17,7 @@
 #include "amp/world/arm_environment.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "amp/world/problem.hpp"
+#include "support/sphere_test_cache.hpp"
 
 namespace amp::world {
 namespace {
@@ -26,8 +27,9 @@ using ::testing::HasSubstr;
 
 fs::path panda_dir() { return fs::path(AMP_SOURCE_DIR) / ".." / "shared" / "mbm" / "panda"; }
 
-// A scratch folder per test binary run: the problem files written here, and the sphere cache
-// ($AMP_CACHE_DIR, which load_problem reads) below it, so nothing is written to the user's home.
+// A scratch folder per test binary run for the problem files written here. The sphere cache
+// ($AMP_CACHE_DIR, which load_problem reads) is the tests' shared one, so nothing is written to the
+// user's home; CollisionKeyChoosesTheModel points it at a fresh folder to see the entry written.
 fs::path scratch() {
   static const fs::path dir = [] {
     const fs::path d = fs::temp_directory_path() / ("amp-sphere-problem-file-test-" + std::to_string(::getpid()));
@@ -40,7 +42,7 @@ fs::path scratch() {
 
 class ScratchEnvironment : public ::testing::Environment {
  public:
-  void SetUp() override { ::setenv("AMP_CACHE_DIR", (scratch() / "cache").c_str(), 1); }
+  void SetUp() override { ::setenv("AMP_CACHE_DIR", test::shared_sphere_cache().c_str(), 1); }
   void TearDown() override {
     std::error_code ec;
     fs::remove_all(scratch(), ec);
@@ -78,10 +80,12 @@ std::string file_error(const fs::path& file, const ProblemOverrides& overrides =
 }
 
 TEST(SphereProblemFile, CollisionKeyChoosesTheModel) {
+  ::setenv("AMP_CACHE_DIR", (scratch() / "cache").c_str(), 1);
   EXPECT_TRUE(sphere_checked(load_problem(write_problem("spheres", "collision: spheres\n"))));
   EXPECT_FALSE(sphere_checked(load_problem(write_problem("meshes", "collision: meshes\n"))));
   EXPECT_FALSE(sphere_checked(load_problem(write_problem("default", ""))));
   EXPECT_TRUE(fs::is_directory(scratch() / "cache")) << "generated spheres are cached in $AMP_CACHE_DIR";
+  ::setenv("AMP_CACHE_DIR", test::shared_sphere_cache().c_str(), 1);
 }
 
 TEST(SphereProblemFile, UnknownCollisionModelNamesTheField) {
@@ -110,7 +114,7 @@ TEST(SphereProblemFile, MeshesWithASpheresFileIsAnError) {
 
 TEST(SphereProblemFile, OverridesWinOverTheFile) {
   const fs::path meshes = write_problem("file_meshes", "collision: meshes\n");
-  EXPECT_TRUE(sphere_checked(load_problem(meshes, ProblemOverrides{"spheres", {}, scratch() / "cache"})));
+  EXPECT_TRUE(sphere_checked(load_problem(meshes, ProblemOverrides{"spheres", {}, test::shared_sphere_cache()})));
   const fs::path spheres = write_problem("file_spheres", "collision: spheres\n");
   EXPECT_FALSE(sphere_checked(load_problem(spheres, ProblemOverrides{"meshes", {}, {}})));
   // A spherized URDF given by the caller implies spheres only with the collision model left to the
@@ -128,7 +132,7 @@ TEST(SphereProblemFile, OverridesOnAPlanarProblemAreErrors) {
     EXPECT_THAT(file_error(file, ProblemOverrides{"meshes", {}, {}}), HasSubstr("arm problem")) << file;
     EXPECT_THAT(file_error(file, ProblemOverrides{"", spherized(), {}}), HasSubstr("arm problem")) << file;
     // Only a cache folder (what `amp plan` always passes) is not a choice of model.
-    EXPECT_EQ(file_error(file, ProblemOverrides{"", {}, scratch() / "cache"}), "") << file;
+    EXPECT_EQ(file_error(file, ProblemOverrides{"", {}, test::shared_sphere_cache()}), "") << file;
   }
 }
 
@@ -142,7 +146,7 @@ struct SphereOnlyCollision {
 
 SphereOnlyCollision find_sphere_only_collision() {
   const ArmDescription robot = load_arm_description(panda_dir() / "panda.urdf", panda_dir() / "panda.srdf", {},
-                                                    ArmCollisionOptions{ArmCollision::kSpheres, {}, scratch() / "cache"});
+                                                    ArmCollisionOptions{ArmCollision::kSpheres, {}, test::shared_sphere_cache()});
   for (const char* family : {"box", "table_pick", "bookshelf_small"}) {
     for (int n = 1; fs::is_regular_file(scene(family, n, "request")); ++n) {
       const Problem p = load_arm_problem(robot, scene(family, n, "scene"), scene(family, n, "request"));
