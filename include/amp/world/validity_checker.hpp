@@ -1,4 +1,6 @@
 #pragma once
+#include <cstddef>
+
 #include <Eigen/Core>
 
 #include "amp/core/counters.hpp"
@@ -30,6 +32,16 @@ class ValidityChecker {
   bool is_valid(const State& s) const {
     counters_->add_cd_call();
     return check(s);
+  }
+  // How many states all_valid takes at once: 1 for a checker that checks one state at a time (the
+  // default); the sphere checker poses a block of configurations together in SIMD lanes, as VAMP
+  // does (docs/arms.md, "Sphere model").
+  std::size_t block_size() const { return compute_block_size(); }
+  // Whether every one of states[0..n) is valid, 1 <= n <= block_size(); the same verdict as
+  // is_valid on each. Counts n CD calls: a block is checked whole.
+  bool all_valid(const State* const* states, std::size_t n) const {
+    for (std::size_t i = 0; i < n; ++i) counters_->add_cd_call();
+    return check_block(states, n);
   }
   // Distance to the nearest obstacle. Counts one clearance call (not a CD call).
   Clearance clearance(const State& s) const {
@@ -66,6 +78,13 @@ class ValidityChecker {
   virtual Clearance compute_clearance(const State& s) const = 0;
   virtual double compute_free_radius(const State& s) const = 0;
   virtual double compute_motion_bound(const State& a, const State& b) const = 0;
+  virtual std::size_t compute_block_size() const { return 1; }
+  virtual bool check_block(const State* const* states, std::size_t n) const {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!check(*states[i])) return false;
+    }
+    return true;
+  }
   virtual double compute_free_share(const State& s, const State& a, const State& b) const {
     return compute_free_radius(s) / compute_motion_bound(a, b);
   }

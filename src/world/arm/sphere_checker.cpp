@@ -6,6 +6,7 @@
 
 #include "amp/core/joint_space.hpp"
 #include "world/arm/arm_geometry.hpp"
+#include "world/arm/block_kinematics.hpp"
 #include "world/arm/sphere_kernels.hpp"
 #include "world/arm/sphere_scene.hpp"
 
@@ -60,6 +61,7 @@ struct SphereChecker::Model {
     bool moves = false;
   };
   std::vector<double> x, y, z, r;  // link frame, in blocks
+  std::vector<double> link_radius;  // per link, repeated in each of kSphereLanes lanes
   std::size_t lanes = 0, widest = 0;
   std::vector<Link> links;
   std::vector<Pair> pairs;
@@ -107,6 +109,7 @@ void SphereChecker::Model::add_links(const ArmEnvironment& env) {
     }
     l.center = box.center();
     for (std::size_t s = l.part; s < i; ++s) l.radius = std::max(l.radius, (parts[s].center - l.center).norm() + parts[s].radius);
+    link_radius.insert(link_radius.end(), kSphereLanes, l.radius);
     for (std::size_t o = 0; o < scene.size(); ++o) {
       if (!env.allowed(scene.object[o], l.link)) l.obstacles.push_back(o);
     }
@@ -136,55 +139,74 @@ void SphereChecker::Model::add_pairs(const ArmEnvironment& env) {
   }
 }
 
-// Per thread: the link poses at the state last placed, the links' bounding spheres, and the world
-// centres of the links whose spheres were asked for (stamped with the placement they belong to).
+// Per thread: the link poses of the block last placed (a pose block per link, one configuration
+// per lane), the links' bounding spheres' centres in every lane (and lane 0's as vectors, for the
+// one-state queries), and the world centres of the spheres of each (link, lane) asked for, stamped
+// with the placement they belong to.
 struct SphereChecker::Scratch {
-  std::vector<Eigen::Isometry3d> poses;
-  std::vector<Eigen::Vector3d> link_centers;  // per Model::Link
-  std::vector<std::uint64_t> stamp;           // per Model::Link
+  explicit Scratch(BlockKinematics k) : kinematics(std::move(k)) {}
+  BlockKinematics kinematics;
+  std::vector<double> poses;                  // link_count() pose blocks
+  std::vector<double> cx, cy, cz;             // per Model::Link, kSphereLanes lanes
+  std::vector<Eigen::Vector3d> link_centers;  // per Model::Link, lane 0
+  std::vector<std::uint64_t> stamp;           // per lane, per Model::Link
   std::uint64_t placement = 0;
-  std::vector<double> world;  // x block, y block, z block
+  std::vector<double> world;  // per lane: x block, y block, z block
   std::vector<double> gaps;   // one link's lanes
   std::vector<double> steps;
 };
 
 SphereChecker::SphereChecker(const ArmEnvironment& env, core::Counters& counters, const SphereKernels& kernels)
-    : ValidityChecker(counters), env_(env), model_(std::make_shared<const Model>(env, kernels)), scratch_(std::make_unique<Scratch>()) {
+    : ValidityChecker(counters),
+      env_(env),
+      model_(std::make_shared<const Model>(env, kernels)),
+      scratch_(std::make_unique<Scratch>(BlockKinematics(env.robot().kinematics(), kernels))) {
   Scratch& w = *scratch_;
-  w.poses.resize(env.robot().kinematics().link_count());
-  w.link_centers.resize(model_->links.size());
-  w.stamp.assign(model_->links.size(), 0);
-  w.world.resize(3 * model_->lanes);
+  const std::size_t links = model_->links.size();
+  w.poses.resize(env.robot().kinematics().link_count() * kPoseBlock);
+  w.cx.resize(links * kSphereLanes);
+  w.cy.resize(links * kSphereLanes);
+  w.cz.resize(links * kSphereLanes);
+  w.link_centers.resize(links);
+  w.stamp.assign(kSphereLanes * links, 0);
+  w.world.resize(kSphereLanes * 3 * model_->lanes);
   w.gaps.resize(model_->widest);
   w.steps.resize(model_->joints);
 }
 
 SphereChecker::~SphereChecker() = default;
 
-void SphereChecker::place(const State& s) const {
+void SphereChecker::place_block(const State* const* q, std::size_t n) const {
   Scratch& w = *scratch_;
-  env_.robot().kinematics().link_poses(s, w.poses.data());
+  w.kinematics.poses(q, n, w.poses.data());
   ++w.placement;
   for (std::size_t i = 0; i < model_->links.size(); ++i) {
-    w.link_centers[i] = w.poses[static_cast<std::size_t>(model_->links[i].link)] * model_->links[i].center;
+    const Model::Link& l = model_->links[i];
+    const std::size_t at = i * kSphereLanes;
+    model_->kernels->place_point(&w.poses[static_cast<std::size_t>(l.link) * kPoseBlock], l.center.x(), l.center.y(),
+                                 l.center.z(), &w.cx[at], &w.cy[at], &w.cz[at]);
+    w.link_centers[i] = Eigen::Vector3d(w.cx[at], w.cy[at], w.cz[at]);
   }
 }
 
-const double* SphereChecker::placed(std::size_t li) const {
+void SphereChecker::place(const State& s) const {
+  const State* q = &s;
+  place_block(&q, 1);
+}
+
+const double* SphereChecker::placed(std::size_t li, std::size_t lane) const {
   Scratch& w = *scratch_;
-  const Model::Link& l = model_->links[li];
-  double* x = w.world.data() + l.block;
-  if (w.stamp[li] != w.placement) {
-    const Eigen::Isometry3d& pose = w.poses[static_cast<std::size_t>(l.link)];
+  const Model& md = *model_;
+  const Model::Link& l = md.links[li];
+  double* x = w.world.data() + lane * 3 * md.lanes + l.block;
+  std::uint64_t& stamp = w.stamp[lane * md.links.size() + li];
+  if (stamp != w.placement) {
+    const double* pose = &w.poses[static_cast<std::size_t>(l.link) * kPoseBlock];
     double m[12];
-    for (int row = 0; row < 3; ++row) {
-      for (int col = 0; col < 3; ++col) m[row * 3 + col] = pose.linear()(row, col);
-      m[9 + row] = pose.translation()[row];
-    }
-    const Model& md = *model_;
+    for (std::size_t e = 0; e < 12; ++e) m[e] = pose[e * kSphereLanes + lane];
     md.kernels->place(m, md.x.data() + l.block, md.y.data() + l.block, md.z.data() + l.block, x, x + md.lanes,
                       x + 2 * md.lanes, l.lanes);
-    w.stamp[li] = w.placement;
+    stamp = w.placement;
   }
   return x;
 }
@@ -201,46 +223,67 @@ const double* SphereChecker::joint_steps(const State& a, const State& b) const {
   return steps;
 }
 
-bool SphereChecker::scene_free() const {
+std::size_t SphereChecker::compute_block_size() const { return kSphereLanes; }
+
+// The coarse level in every lane at once: each link's bounding sphere against each obstacle it may
+// touch; a lane whose bounding sphere reaches the obstacle looks at that link's spheres.
+bool SphereChecker::scene_free(std::size_t n) const {
   const Model& md = *model_;
   const Scratch& w = *scratch_;
+  double coarse[kSphereLanes];
   for (std::size_t i = 0; i < md.links.size(); ++i) {
     const Model::Link& l = md.links[i];
+    const std::size_t at = i * kSphereLanes;
     for (const std::size_t o : l.obstacles) {
-      // The coarse level: the link's bounding sphere, first by the obstacle's bounding ball.
-      if (obstacle_beyond(md.scene, o, w.link_centers[i], l.radius)) continue;
-      if (obstacle_distance(md.scene, o, w.link_centers[i]) > l.radius) continue;
-      const double* x = placed(i);
-      md.kernels->obstacle_gaps(md.scene, o, x, x + md.lanes, x + 2 * md.lanes, md.r.data() + l.block, l.lanes,
-                                scratch_->gaps.data());
-      if (least(scratch_->gaps.data(), l.lanes) <= 0.0) return false;
+      // First by the obstacle's bounding ball alone (no rotation), lane by lane.
+      bool near = false;
+      for (std::size_t k = 0; k < n && !near; ++k) {
+        near = !obstacle_beyond(md.scene, o, Eigen::Vector3d(w.cx[at + k], w.cy[at + k], w.cz[at + k]), l.radius);
+      }
+      if (!near) continue;
+      md.kernels->obstacle_gaps(md.scene, o, &w.cx[at], &w.cy[at], &w.cz[at], &md.link_radius[at], kSphereLanes, coarse);
+      for (std::size_t k = 0; k < n; ++k) {
+        if (coarse[k] > 0.0) continue;
+        const double* x = placed(i, k);
+        md.kernels->obstacle_gaps(md.scene, o, x, x + md.lanes, x + 2 * md.lanes, md.r.data() + l.block, l.lanes,
+                                  scratch_->gaps.data());
+        if (least(scratch_->gaps.data(), l.lanes) <= 0.0) return false;
+      }
     }
   }
   return true;
 }
 
-bool SphereChecker::self_free() const {
+bool SphereChecker::self_free(std::size_t n) const {
   const Model& md = *model_;
   const Scratch& w = *scratch_;
   for (const Model::Pair& p : md.pairs) {
     const Model::Link &a = md.links[p.a], &b = md.links[p.b];
     const double reach = a.radius + b.radius;
-    if ((w.link_centers[p.a] - w.link_centers[p.b]).squaredNorm() > reach * reach) continue;
-    const double* xa = placed(p.a);
-    const double* xb = placed(p.b);
-    for (std::size_t i = 0; i < a.count; ++i) {
-      const std::size_t ia = i;
-      md.kernels->sphere_gaps(xa[ia], xa[md.lanes + ia], xa[2 * md.lanes + ia], md.r[a.block + ia], xb, xb + md.lanes,
-                              xb + 2 * md.lanes, md.r.data() + b.block, b.lanes, scratch_->gaps.data());
-      if (least(scratch_->gaps.data(), b.lanes) <= 0.0) return false;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t ia = p.a * kSphereLanes + k, ib = p.b * kSphereLanes + k;
+      const double dx = w.cx[ia] - w.cx[ib], dy = w.cy[ia] - w.cy[ib], dz = w.cz[ia] - w.cz[ib];
+      if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
+      const double* xa = placed(p.a, k);
+      const double* xb = placed(p.b, k);
+      for (std::size_t i = 0; i < a.count; ++i) {
+        md.kernels->sphere_gaps(xa[i], xa[md.lanes + i], xa[2 * md.lanes + i], md.r[a.block + i], xb, xb + md.lanes,
+                                xb + 2 * md.lanes, md.r.data() + b.block, b.lanes, scratch_->gaps.data());
+        if (least(scratch_->gaps.data(), b.lanes) <= 0.0) return false;
+      }
     }
   }
   return true;
 }
 
 bool SphereChecker::check(const State& s) const {
-  place(s);
-  return scene_free() && self_free();
+  const State* q = &s;
+  return check_block(&q, 1);
+}
+
+bool SphereChecker::check_block(const State* const* states, std::size_t n) const {
+  place_block(states, n);
+  return scene_free(n) && self_free(n);
 }
 
 double SphereChecker::link_clearance(std::size_t li, double below) const {

@@ -24,17 +24,23 @@ class SphereChecker final : public ValidityChecker {
   struct Model;
   struct Scratch;
   bool check(const State& s) const override;
+  std::size_t compute_block_size() const override;
+  bool check_block(const State* const* states, std::size_t n) const override;
   Clearance compute_clearance(const State& s) const override;
   double compute_free_radius(const State& s) const override;
   double compute_motion_bound(const State& a, const State& b) const override;
   double compute_free_share(const State& s, const State& a, const State& b) const override;
 
-  // Poses the links and their bounding spheres; a link's spheres are placed when first asked for.
+  // Poses the links and their bounding spheres in each lane (states[0..n), the rest repeating the
+  // last); a link's spheres in a lane are placed when first asked for. place(s) is a block of one.
+  void place_block(const State* const* states, std::size_t n) const;
   void place(const State& s) const;
-  const double* placed(std::size_t link) const;  // the link's block of world x (then y, z at stride)
+  // The link's block of world x (then y, z at stride) in `lane`.
+  const double* placed(std::size_t link, std::size_t lane = 0) const;
   const double* joint_steps(const State& a, const State& b) const;
-  bool scene_free() const;
-  bool self_free() const;
+  // Whether lanes [0, n) are free of the scene, and of self-collision.
+  bool scene_free(std::size_t n) const;
+  bool self_free(std::size_t n) const;
   // free_share's halves: each lowers `share`; false when the state is not valid.
   bool scene_share(const double* steps, double& share) const;
   bool self_share(const double* steps, double& share) const;

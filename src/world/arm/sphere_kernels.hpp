@@ -14,8 +14,19 @@ struct SphereScene;
 // a link's spheres by repeating its last one, which changes no minimum).
 inline constexpr std::size_t kSphereLanes = 4;
 
+// A pose block: the poses of one link in kSphereLanes configurations, as 12 arrays of lanes (the
+// rotation row-major, then the translation): entry e of lane k at [e * kSphereLanes + k].
+inline constexpr std::size_t kPoseBlock = 12 * kSphereLanes;
+
 struct SphereKernels {
   const char* name;  // "avx2" or "baseline"
+  // out = parent * rhs, lane by lane (pose blocks).
+  void (*compose)(const double* parent, const double* rhs, double* out);
+  // rhs = fixed * (a turn about z by the lane's angle, given its cosine and sine); `fixed` is one
+  // pose (12 values), rhs a pose block.
+  void (*turn_z)(const double* fixed, const double* cos, const double* sin, double* rhs);
+  // The world position of link-frame point p in each lane's pose.
+  void (*place_point)(const double* pose, double px, double py, double pz, double* wx, double* wy, double* wz);
   // World centres: w = R * l + t for n spheres; `pose` is R row-major then t (12 values).
   void (*place)(const double* pose, const double* lx, const double* ly, const double* lz, double* wx, double* wy,
                 double* wz, std::size_t n);

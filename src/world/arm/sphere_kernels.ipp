@@ -15,6 +15,39 @@ using Lanes = stdx::fixed_size_simd<double, kSphereLanes>;
 inline Lanes load(const double* p) { return Lanes(p, stdx::element_aligned); }
 inline void store(const Lanes& v, double* p) { v.copy_to(p, stdx::element_aligned); }
 
+// Pose blocks (sphere_kernels.hpp): entry e's lanes.
+inline Lanes entry(const double* block, int e) { return load(block + e * kSphereLanes); }
+
+void compose(const double* p, const double* q, double* out) {
+  Lanes a[12], b[12];
+  for (int e = 0; e < 12; ++e) a[e] = entry(p, e), b[e] = entry(q, e);
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) {
+      store(a[row * 3] * b[col] + a[row * 3 + 1] * b[3 + col] + a[row * 3 + 2] * b[6 + col], out + (row * 3 + col) * kSphereLanes);
+    }
+    store(a[row * 3] * b[9] + a[row * 3 + 1] * b[10] + a[row * 3 + 2] * b[11] + a[9 + row], out + (9 + row) * kSphereLanes);
+  }
+}
+
+// A turn about z mixes the first two columns: col0' = c col0 + s col1, col1' = c col1 - s col0.
+void turn_z(const double* m, const double* cos, const double* sin, double* rhs) {
+  const Lanes c = load(cos), s = load(sin);
+  for (int row = 0; row < 3; ++row) {
+    const double x = m[row * 3], y = m[row * 3 + 1];
+    store(c * x + s * y, rhs + (row * 3) * kSphereLanes);
+    store(c * y - s * x, rhs + (row * 3 + 1) * kSphereLanes);
+    store(Lanes(m[row * 3 + 2]), rhs + (row * 3 + 2) * kSphereLanes);
+    store(Lanes(m[9 + row]), rhs + (9 + row) * kSphereLanes);
+  }
+}
+
+void place_point(const double* pose, double px, double py, double pz, double* wx, double* wy, double* wz) {
+  double* const out[3] = {wx, wy, wz};
+  for (int row = 0; row < 3; ++row) {
+    store(entry(pose, row * 3) * px + entry(pose, row * 3 + 1) * py + entry(pose, row * 3 + 2) * pz + entry(pose, 9 + row), out[row]);
+  }
+}
+
 void place(const double* m, const double* lx, const double* ly, const double* lz, double* wx, double* wy, double* wz,
            std::size_t n) {
   for (std::size_t i = 0; i < n; i += kSphereLanes) {
@@ -76,6 +109,6 @@ void sphere_gaps(double cx, double cy, double cz, double radius, const double* w
   }
 }
 
-const SphereKernels kKernels{AMP_KERNEL_NAME, place, obstacle_gaps, sphere_gaps};
+const SphereKernels kKernels{AMP_KERNEL_NAME, compose, turn_z, place_point, place, obstacle_gaps, sphere_gaps};
 
 }  // namespace amp::world::detail::AMP_KERNEL_NS

@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -13,12 +15,13 @@ namespace amp::roadmap {
 // Proves that the whole segment a -> b of the space's interpolation is free, not only its sample
 // points, by conservative advancement: at parameter t the robot is free by at least
 // r = checker.free_radius(q(t)), and no robot point moves by more than L = checker.motion_bound(a, b)
-// over the whole segment (t in [0, 1]), so every t' with |t' - t| * L < r is free as well; step by
-// r / L from both ends towards the middle until the two fronts meet. The checker gives that share
-// (ValidityChecker::free_share): an arm's checker weighs each part's distance against that part's
-// own motion, a larger step. A step below a billionth of the segment (the robot is touching or
-// almost touching) ends the proof: the segment is refused, a conservative answer. Each step costs
-// one counted clearance call, no CD call.
+// over the whole segment (t in [0, 1]), so every t' with |t' - t| * L < r is free as well. The
+// checker gives that share (ValidityChecker::free_share): an arm's checker weighs each part's
+// distance against that part's own motion, a larger share. The ends are measured first, then the
+// centre of every stretch not yet proven, whose share proves as much on either side, until the
+// proven stretches cover the segment. A share below a billionth of the segment (the robot is
+// touching or almost touching) ends the proof: the segment is refused, a conservative answer. Each
+// state costs one counted clearance call, no CD call.
 class EdgeCertifier {
  public:
   // stop (optional) is polled between steps so that a long proof cannot run past a run's limits;
@@ -35,10 +38,18 @@ class EdgeCertifier {
   void report(std::map<std::string, double>& extra) const;
 
  private:
+  struct Gap {
+    double lo, hi;  // a stretch of the segment not yet proven free
+  };
+  bool prove(const State& a, const State& b);
+  // The share proven on either side of the state at t (with a safety factor).
+  double proven_share(const State& a, const State& b, double t);
+
   const core::Space* space_;
   const world::ValidityChecker* checker_;
   const core::StopCondition* stop_;
   State scratch_;
+  std::array<Gap, 64> gaps_{};  // pending stretches, depth first
   std::uint64_t certified_ = 0;
   std::uint64_t refused_ = 0;
 };

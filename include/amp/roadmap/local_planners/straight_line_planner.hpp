@@ -43,6 +43,10 @@ class StraightLinePlanner final : public LocalPlanner {
   // Edges of up to this many segments use a cached order (the order of repeated lengths is kept);
   // longer ones the generator, so that no edge allocates in proportion to its length.
   static constexpr std::int64_t kMaxCachedSegments = 1 << 16;
+  // The largest block handed to a checker that checks several states at once.
+  static constexpr std::size_t kMaxBlock = 8;
+
+  bool check_in_blocks(const State& a, const State& b, const std::vector<int>& order, double inv);
 
   const core::Space* space_;
   const world::ValidityChecker* checker_;
@@ -52,6 +56,8 @@ class StraightLinePlanner final : public LocalPlanner {
   std::vector<std::pair<int, int>> queue_;
   int order_segments_ = -1;
   State scratch_;
+  std::array<State, kMaxBlock> block_;
+  std::array<const State*, kMaxBlock> block_refs_{};
 };
 
 template <class Visit>
