@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "amp/core/joint_space.hpp"
 #include "world/arm/arm_geometry.hpp"
@@ -31,6 +32,38 @@ std::size_t padded(std::size_t n) { return (n + kSphereLanes - 1) / kSphereLanes
 
 double least(const double* v, std::size_t n) { return *std::min_element(v, v + n); }
 
+// Where a point of a link can ever be: within `radius` of `center`, over every configuration. Above
+// the topmost movable joint on the link's path from the root nothing moves, so that joint's frame
+// origin is fixed, and turns about it keep distances; below it each joint's offset, and the point's
+// own, add their lengths at most. A slide on the path leaves it unbounded.
+struct Reach {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = std::numeric_limits<double>::infinity();
+};
+
+Reach link_reach(const ArmKinematics& k, const std::vector<Eigen::Isometry3d>& poses, int link, const Eigen::Vector3d& point) {
+  const ArmModel& m = k.model();
+  std::vector<int> path;  // joints from the link up to the root
+  for (int l = link; m.link(l).parent_joint >= 0; l = m.joint(m.link(l).parent_joint).parent_link) path.push_back(m.link(l).parent_joint);
+  std::size_t top = path.size();  // the topmost movable joint
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (m.joint(path[i]).movable()) top = i;
+  }
+  Reach r;
+  if (top == path.size()) {  // nothing moves it
+    r.center = poses[static_cast<std::size_t>(link)] * point;
+    r.radius = 0.0;
+    return r;
+  }
+  for (std::size_t i = 0; i <= top; ++i) {
+    if (m.joint(path[i]).type == ArmJointType::kPrismatic) return r;
+  }
+  r.center = poses[static_cast<std::size_t>(m.joint(path[top]).child_link)].translation();
+  r.radius = point.norm();
+  for (std::size_t i = 0; i < top; ++i) r.radius += m.joint(path[i]).origin.translation().norm();
+  return r;
+}
+
 }  // namespace
 
 bool sphere_checker_applies(const ArmEnvironment& env) {
@@ -51,6 +84,7 @@ struct SphereChecker::Model {
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
     double radius = 0.0;
     std::vector<std::size_t> obstacles;  // those the scene does not allow it to touch
+    std::vector<std::size_t> reachable;  // of those, the ones within its reach (link_reach)
     std::vector<double> motion;          // per group joint
     bool moves = false;
   };
@@ -84,6 +118,9 @@ SphereChecker::Model::Model(const ArmEnvironment& env, const SphereKernels& k)
 void SphereChecker::Model::add_links(const ArmEnvironment& env) {
   const auto& parts = env.robot().geometry().parts;
   const ArmMotionCoefficients& c = env.robot().motion_coefficients();
+  const ArmKinematics& kinematics = env.robot().kinematics();
+  std::vector<Eigen::Isometry3d> poses(kinematics.link_count());
+  kinematics.link_poses(State::Zero(kinematics.dof()), poses.data());  // the fixed frames (any state)
   for (std::size_t i = 0; i < parts.size();) {
     Link l;
     l.link = parts[i].link;
@@ -110,8 +147,14 @@ void SphereChecker::Model::add_links(const ArmEnvironment& env) {
     l.center = box.center();
     for (std::size_t s = l.part; s < i; ++s) l.radius = std::max(l.radius, (parts[s].center - l.center).norm() + parts[s].radius);
     link_radius.insert(link_radius.end(), kSphereLanes, l.radius);
+    // Obstacles the link may not touch; validity and certification need only those it can reach in
+    // some configuration, clearance all of them.
+    const Reach reach = link_reach(kinematics, poses, l.link, l.center);
     for (std::size_t o = 0; o < scene.size(); ++o) {
-      if (!env.allowed(scene.object[o], l.link)) l.obstacles.push_back(o);
+      if (env.allowed(scene.object[o], l.link)) continue;
+      l.obstacles.push_back(o);
+      const Eigen::Vector3d to(scene.cx[o] - reach.center.x(), scene.cy[o] - reach.center.y(), scene.cz[o] - reach.center.z());
+      if (to.norm() - scene.bound[o] <= reach.radius + l.radius) l.reachable.push_back(o);
     }
     l.motion = max_row(c.part, l.part, l.count, joints);
     l.moves = std::any_of(l.motion.begin(), l.motion.end(), [](double v) { return v > 0.0; });
@@ -234,7 +277,7 @@ bool SphereChecker::scene_free(std::size_t n) const {
   for (std::size_t i = 0; i < md.links.size(); ++i) {
     const Model::Link& l = md.links[i];
     const std::size_t at = i * kSphereLanes;
-    for (const std::size_t o : l.obstacles) {
+    for (const std::size_t o : l.reachable) {
       // First by the obstacle's bounding ball alone (no rotation), lane by lane.
       bool near = false;
       for (std::size_t k = 0; k < n && !near; ++k) {
@@ -359,7 +402,7 @@ bool SphereChecker::scene_share(const double* steps, double& share) const {
     const Model::Link& l = md.links[li];
     if (!l.moves) continue;  // the same all along: the state's own validity covers it
     const double v_link = ArmMotionCoefficients::dot(l.motion.data(), steps, n);
-    for (const std::size_t o : l.obstacles) {
+    for (const std::size_t o : l.reachable) {
       const double enough = share * v_link;  // a gap this wide cannot lower the share
       if (enough < kInf && obstacle_beyond(md.scene, o, w.link_centers[li], l.radius + enough)) continue;
       const double gap = obstacle_distance(md.scene, o, w.link_centers[li]) - l.radius;
