@@ -55,6 +55,37 @@ void BM_PandaIsValid(benchmark::State& state) {
 }
 BENCHMARK(BM_PandaIsValid)->Arg(0)->Arg(1)->Arg(2);
 
+// An edge's states, four nearby ones at a time (t = 1/64 .. 4/64 from a uniform state towards
+// another), as the straight-line planner hands them over. Arg 0: one at a time, stopping at the first
+// invalid; 1: blocks of four (ValidityChecker::all_valid). Items: four states per iteration.
+void BM_PandaEdgeStates(benchmark::State& state) {
+  const amp::world::Problem p = box_problem(amp::world::ArmCollision::kSpheres);
+  amp::core::Counters counters;
+  const auto checker = p.environment->make_checker(counters);
+  const std::vector<State> ends = uniform_states(p);
+  std::vector<State> states(4 * (ends.size() - 1));
+  for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
+    for (std::size_t k = 0; k < 4; ++k) p.space->interpolate(ends[e], ends[e + 1], static_cast<double>(k + 1) / 64.0, states[4 * e + k]);
+  }
+  std::size_t e = 0, free = 0;
+  for (auto _ : state) {
+    const State* block[4] = {&states[4 * e], &states[4 * e + 1], &states[4 * e + 2], &states[4 * e + 3]};
+    bool ok = true;
+    if (state.range(0) == 0) {
+      for (const State* s : block) {
+        if (!(ok = checker->is_valid(*s))) break;
+      }
+    } else {
+      ok = checker->all_valid(block, 4);
+    }
+    free += ok ? 1 : 0;
+    e = (e + 1) % (ends.size() - 1);
+  }
+  state.counters["free"] = static_cast<double>(free) / static_cast<double>(state.iterations());
+  state.SetItemsProcessed(4 * state.iterations());
+}
+BENCHMARK(BM_PandaEdgeStates)->Arg(0)->Arg(1);
+
 // The certified step's query: free_share from a state along a segment to another uniform state.
 void BM_PandaFreeShare(benchmark::State& state) {
   const amp::world::Problem p = box_problem(state.range(0) > 0 ? amp::world::ArmCollision::kSpheres : amp::world::ArmCollision::kMeshes);

@@ -190,6 +190,7 @@ struct SphereChecker::Scratch {
   explicit Scratch(BlockKinematics k) : kinematics(std::move(k)) {}
   BlockKinematics kinematics;
   std::vector<double> poses;                  // link_count() pose blocks
+  std::vector<Eigen::Isometry3d> scalar_poses;  // a block of one's poses (place_one)
   std::vector<double> cx, cy, cz;             // per Model::Link, kSphereLanes lanes
   std::vector<Eigen::Vector3d> link_centers;  // per Model::Link, lane 0
   std::vector<std::uint64_t> stamp;           // per lane, per Model::Link
@@ -207,6 +208,7 @@ SphereChecker::SphereChecker(const ArmEnvironment& env, core::Counters& counters
   Scratch& w = *scratch_;
   const std::size_t links = model_->links.size();
   w.poses.resize(env.robot().kinematics().link_count() * kPoseBlock);
+  w.scalar_poses.resize(env.robot().kinematics().link_count());
   w.cx.resize(links * kSphereLanes);
   w.cy.resize(links * kSphereLanes);
   w.cz.resize(links * kSphereLanes);
@@ -221,14 +223,38 @@ SphereChecker::~SphereChecker() = default;
 
 void SphereChecker::place_block(const State* const* q, std::size_t n) const {
   Scratch& w = *scratch_;
-  w.kinematics.poses(q, n, w.poses.data());
   ++w.placement;
+  if (n == 1) {
+    place_one(*q[0]);
+    return;
+  }
+  w.kinematics.poses(q, n, w.poses.data());
   for (std::size_t i = 0; i < model_->links.size(); ++i) {
     const Model::Link& l = model_->links[i];
     const std::size_t at = i * kSphereLanes;
     model_->kernels->place_point(&w.poses[static_cast<std::size_t>(l.link) * kPoseBlock], l.center.x(), l.center.y(),
                                  l.center.z(), &w.cx[at], &w.cy[at], &w.cz[at]);
     w.link_centers[i] = Eigen::Vector3d(w.cx[at], w.cy[at], w.cz[at]);
+  }
+}
+
+// One state: the scalar chain (ArmKinematics), into lane 0 only, which is all that a block of one
+// reads. It is the same pose as a block's lane to rounding, and a quarter of the block's work: one
+// state at a time is how rrt-connect checks a new node and certification measures a state.
+void SphereChecker::place_one(const State& s) const {
+  Scratch& w = *scratch_;
+  env_.robot().kinematics().link_poses(s, w.scalar_poses.data());
+  for (std::size_t i = 0; i < model_->links.size(); ++i) {
+    const Model::Link& l = model_->links[i];
+    const Eigen::Isometry3d& pose = w.scalar_poses[static_cast<std::size_t>(l.link)];
+    double m[12];
+    pose_values(pose, m);
+    double* block = &w.poses[static_cast<std::size_t>(l.link) * kPoseBlock];
+    for (std::size_t e = 0; e < 12; ++e) block[e * kSphereLanes] = m[e];
+    const Eigen::Vector3d c = pose * l.center;
+    const std::size_t at = i * kSphereLanes;
+    w.cx[at] = c.x(), w.cy[at] = c.y(), w.cz[at] = c.z();
+    w.link_centers[i] = c;
   }
 }
 
@@ -284,7 +310,11 @@ bool SphereChecker::scene_free(std::size_t n) const {
         near = !obstacle_beyond(md.scene, o, Eigen::Vector3d(w.cx[at + k], w.cy[at + k], w.cz[at + k]), l.radius);
       }
       if (!near) continue;
-      md.kernels->obstacle_gaps(md.scene, o, &w.cx[at], &w.cy[at], &w.cz[at], &md.link_radius[at], kSphereLanes, coarse);
+      if (n == 1) {  // one lane: the scalar distance is cheaper than four lanes' worth
+        coarse[0] = obstacle_distance(md.scene, o, w.link_centers[i]) - l.radius;
+      } else {
+        md.kernels->obstacle_gaps(md.scene, o, &w.cx[at], &w.cy[at], &w.cz[at], &md.link_radius[at], kSphereLanes, coarse);
+      }
       for (std::size_t k = 0; k < n; ++k) {
         if (coarse[k] > 0.0) continue;
         const double* x = placed(i, k);

@@ -34,6 +34,7 @@ class SphereChecker final : public ValidityChecker {
   // Poses the links and their bounding spheres in each lane (states[0..n), the rest repeating the
   // last); a link's spheres in a lane are placed when first asked for. place(s) is a block of one.
   void place_block(const State* const* states, std::size_t n) const;
+  void place_one(const State& s) const;
   void place(const State& s) const;
   // The link's block of world x (then y, z at stride) in `lane`.
   const double* placed(std::size_t link, std::size_t lane = 0) const;
