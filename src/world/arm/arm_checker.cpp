@@ -4,7 +4,6 @@
 #include <limits>
 #include <unordered_map>
 
-#include "amp/core/joint_space.hpp"
 #include "world/arm/arm_geometry.hpp"
 
 namespace amp::world::detail {
@@ -211,15 +210,8 @@ double ArmChecker::compute_free_radius(const State& s) const {
 }
 
 const double* ArmChecker::joint_steps(const State& a, const State& b) const {
-  const ArmModel& m = env_.robot().model();
-  const std::vector<int>& joints = env_.robot().kinematics().group().joints;
-  double* steps = scratch_->steps.data();
-  for (std::size_t k = 0; k < joints.size(); ++k) {
-    const int i = static_cast<int>(k);
-    steps[k] = m.joint(joints[k]).type == ArmJointType::kContinuous ? std::abs(core::angle_difference(a[i], b[i]))
-                                                                    : std::abs(b[i] - a[i]);
-  }
-  return steps;
+  arm_joint_steps(env_.robot().kinematics(), a, b, scratch_->steps.data());
+  return scratch_->steps.data();
 }
 
 double ArmChecker::compute_motion_bound(const State& a, const State& b) const {

@@ -58,4 +58,8 @@ struct ArmMotionCoefficients {
 ArmMotionCoefficients arm_motion_coefficients(const ArmKinematics& kinematics, const ArmGeometry& geometry,
                                               const std::vector<std::pair<int, int>>& part_pairs);
 
+// Each group joint's travel from a to b along the space's interpolation, into steps[0..dof): |b - a|,
+// the shorter way round for a continuous joint. What the motion coefficients multiply.
+void arm_joint_steps(const ArmKinematics& kinematics, const State& a, const State& b, double* steps);
+
 }  // namespace amp::world::detail

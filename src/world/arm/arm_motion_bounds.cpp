@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "amp/core/joint_space.hpp"
 #include "world/arm/arm_geometry.hpp"
 
 namespace amp::world::detail {
@@ -109,6 +110,16 @@ ArmMotionCoefficients arm_motion_coefficients(const ArmKinematics& kinematics, c
     c.pair_moves.push_back(any_nonzero(&c.pair[i * n], c.joints) ? 1 : 0);
   }
   return c;
+}
+
+void arm_joint_steps(const ArmKinematics& kinematics, const State& a, const State& b, double* steps) {
+  const ArmModel& m = kinematics.model();
+  const std::vector<int>& joints = kinematics.group().joints;
+  for (std::size_t k = 0; k < joints.size(); ++k) {
+    const int i = static_cast<int>(k);
+    steps[k] = m.joint(joints[k]).type == ArmJointType::kContinuous ? std::abs(core::angle_difference(a[i], b[i]))
+                                                                    : std::abs(b[i] - a[i]);
+  }
 }
 
 }  // namespace amp::world::detail

@@ -5,7 +5,6 @@
 #include <limits>
 #include <vector>
 
-#include "amp/core/joint_space.hpp"
 #include "world/arm/arm_geometry.hpp"
 #include "world/arm/block_kinematics.hpp"
 #include "world/arm/sphere_kernels.hpp"
@@ -281,15 +280,8 @@ const double* SphereChecker::placed(std::size_t li, std::size_t lane) const {
 }
 
 const double* SphereChecker::joint_steps(const State& a, const State& b) const {
-  const ArmModel& m = env_.robot().model();
-  const std::vector<int>& joints = env_.robot().kinematics().group().joints;
-  double* steps = scratch_->steps.data();
-  for (std::size_t k = 0; k < joints.size(); ++k) {
-    const int i = static_cast<int>(k);
-    steps[k] = m.joint(joints[k]).type == ArmJointType::kContinuous ? std::abs(core::angle_difference(a[i], b[i]))
-                                                                    : std::abs(b[i] - a[i]);
-  }
-  return steps;
+  arm_joint_steps(env_.robot().kinematics(), a, b, scratch_->steps.data());
+  return scratch_->steps.data();
 }
 
 std::size_t SphereChecker::compute_block_size() const { return kSphereLanes; }
