@@ -41,7 +41,11 @@ const core::SettingsSchema<SinsSettings>& SinsSettings::schema() {
        core::real_field<S>("sphere_of_influence", [](S& s) -> double& { return s.motor.sphere_of_influence; }, 0, 1e3,
                            "m beyond the rim within which obstacles repel (and the sensors' range)"),
        core::real_field<S>("max_speed", [](S& s) -> double& { return s.motor.max_speed; }, 0, 1e3,
-                           "m per step the robot moves at most")});
+                           "m per step the robot moves at most"),
+       core::real_field<S>("width", [](S& s) -> double& { return s.world.width; }, 0, 1e4,
+                           "m, the clutter box's extent along x (start and goal lie along the longer side)"),
+       core::real_field<S>("height", [](S& s) -> double& { return s.world.height; }, 0, 1e4,
+                           "m, the clutter box's extent along y")});
   return schema;
 }
 
