@@ -4,7 +4,7 @@ SAN_BUILD ?= build-sanitize
 JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 
-.PHONY: all deps configure build demo test timing arms bench sanitize sanitize-build fuzz install-check clean
+.PHONY: all deps configure build demo test timing arms slow bench sanitize sanitize-build fuzz install-check clean
 
 all: build
 
@@ -28,7 +28,7 @@ demo: configure
 # alone on an idle machine by `make timing` (CI does it after the suite).
 test: DEPS_FLAGS = --test
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) -LE '^(timing|arms)$$'
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) -LE '^(timing|arms|slow)$$'
 
 timing: build
 	cd $(BUILD) && ctest --output-on-failure -j1 -L '^timing$$'
@@ -37,6 +37,11 @@ timing: build
 # (tests/problems/arm_planners_test.cpp, about 4 minutes; needs ../shared/mbm).
 arms: build
 	cd $(BUILD) && ctest --output-on-failure -j1 -L '^arms$$'
+
+# Checks too slow for every run: the SINS scale calibration reproduced from scratch
+# (tests/bench/sins_scale_reproduction_test.cpp, about 2.5 minutes).
+slow: build
+	cd $(BUILD) && ctest --output-on-failure -j1 -L '^slow$$'
 
 # `cmake --install` into a temporary prefix: every installed header compiles alone, and
 # examples/plan_a_problem builds against find_package(amp) and solves a problem.
@@ -50,7 +55,7 @@ bench: build
 # level: the suite runs in minutes instead of the -O0 build's twenty, and reports keep file and
 # line), with clang 14 so that the same libraries carry libFuzzer's coverage and serve `make fuzz`.
 # `make sanitize` runs every test but the MPI one, whose leak reports come from inside Open MPI, and
-# the wall-clock `timing` label and the `arms` label (it skips itself there). The sphere model's
+# the wall-clock `timing` label, the `arms` label (it skips itself there) and `slow`. The sphere model's
 # tests share one generated cover per build (tests/support/sphere_test_cache.hpp), so they run here too.
 sanitize-build: DEPS_FLAGS = --sanitize
 sanitize-build: deps
@@ -60,7 +65,7 @@ sanitize-build: deps
 
 sanitize: sanitize-build
 	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --output-on-failure -j$(JOBS) -LE '^(timing|arms)$$' -E '^apps[.]mpi_bench_equals_single_process$$'
+	  ctest --output-on-failure -j$(JOBS) -LE '^(timing|arms|slow)$$' -E '^apps[.]mpi_bench_equals_single_process$$'
 
 # Every libFuzzer target (tests/fuzz) for FUZZ_SECONDS each, FUZZ_JOBS at a time; FUZZ_RUNS bounds
 # the executions instead (scripts/fuzz.sh).

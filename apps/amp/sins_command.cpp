@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "amp/bench/sins_calibration.hpp"
 #include "amp/core/error.hpp"
 #include "amp/core/parameters.hpp"
 #include "cli_util.hpp"
@@ -31,6 +32,8 @@ struct SinsOptions {
   int control_interval = nav::SinsSettings{}.control_interval;
   int step_limit = nav::SinsSettings{}.step_limit;
   std::uint64_t seed = 1;
+  std::string scale{nav::kCalibratedScale.name};
+  bool calibrate = false;
   std::vector<std::string> params;
   std::string output;
   bool json = false;
@@ -115,6 +118,16 @@ SinsSetup read_setup(const SinsOptions& o) {
       throw ParameterError(option->get_name() + ": also given as --param " + name + "=...; give it once");
     }
   }
+  // The scale's step limit and radii, unless given; its box after reading (the box is no parameter).
+  nav::SinsSettings scaled;
+  try {
+    scaled.set_scale(nav::sins_scale(o.scale));
+  } catch (const ParameterError& e) {
+    throw ParameterError(std::string("--scale: ") + e.what());
+  }
+  sins_given.try_emplace("step_limit", static_cast<double>(scaled.step_limit));
+  sins_given.try_emplace("min_radius", scaled.world.min_radius);
+  sins_given.try_emplace("max_radius", scaled.world.max_radius);
   SinsSetup setup;
   try {
     setup.sins = sins_schema.read(core::Params(sins_schema.owner(), sins_schema.specs(), sins_given));
@@ -123,6 +136,8 @@ SinsSetup read_setup(const SinsOptions& o) {
   } catch (const ParameterError& e) {
     throw ParameterError(std::string("--param: ") + e.what());
   }
+  setup.sins.world.width = scaled.world.width;
+  setup.sins.world.height = scaled.world.height;
   for (const auto& [name, option] : o.named) {
     if (option->count() == 0) continue;
     if (name == "worlds") setup.sins.worlds = o.worlds;
@@ -148,6 +163,45 @@ SinsSetup read_setup(const SinsOptions& o) {
   setup.system = o.system;
   setup.seed = o.seed;
   return setup;
+}
+
+std::string fixed(double v, int digits) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+std::string share_text(const bench::SolvedShare& s) {
+  return fixed(100 * s.mean, 1) + "% [" + fixed(100 * s.ci95_low, 1) + ", " + fixed(100 * s.ci95_high, 1) + "]";
+}
+
+// `amp sins --calibrate`: bench::calibrate_sins_scale from the command's settings (its clutter, worlds,
+// ...), each factor printed as it is measured. Not reaching the targets is an error (exit 1).
+int run_calibration(const SinsOptions& o, const CLI::Option* seed_option) {
+  bench::SinsCalibrationSettings c;
+  c.base = read_setup(o).sins;
+  if (seed_option->count() > 0) c.seed = o.seed;
+  std::cout << "calibrating the scale (seed " << c.seed << ", " << c.search_sequences << " sequences of "
+            << c.base.worlds << " worlds per factor): static " << fixed(100 * c.static_target, 1) << "%, random "
+            << fixed(100 * c.random_target, 1) << "% solved at clutter " << c.base.world.clutter << '\n';
+  const bench::SinsCalibration r = bench::calibrate_sins_scale(c, [](const bench::ScaleProbe& p) {
+    std::cout << "  scale " << fixed(p.factor, 4) << ": step limit " << p.step_limit << ", random "
+              << fixed(100 * p.random_solved, 1) << "%, static " << fixed(100 * p.static_solved, 1) << "%\n"
+              << std::flush;
+  });
+  if (r.scale.step_limit > 0) {
+    const nav::ClutterWorldSettings classic{};
+    std::cout << "scale " << fixed(r.scale.factor, 2) << " (a " << fixed(classic.width * r.scale.factor, 1) << " m box, circles "
+              << fixed(classic.min_radius * r.scale.factor, 3) << "-" << fixed(classic.max_radius * r.scale.factor, 3)
+              << " m), step limit " << r.scale.step_limit << '\n';
+  }
+  if (!r.static_share.per_sequence.empty()) {
+    std::cout << "check over " << c.sequences << " fresh sequences: static " << share_text(r.static_share)
+              << ", random " << share_text(r.random_share) << '\n';
+  }
+  if (!r.reached) throw Error("--calibrate: " + r.why);
+  std::cout << "reached: both targets inside their 95% intervals\n";
+  return kExitOk;
 }
 
 int run_sins_command(const SinsOptions& o) {
@@ -202,10 +256,22 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                                                                 std::to_string(o->control_interval) + "]")
                                                 ->check(positive_integer()));
   o->named.emplace_back("step_limit", cmd->add_option("--step-limit", o->step_limit,
-                                                      "Steps per world before it counts as unsolved [" +
-                                                          std::to_string(o->step_limit) + "]")
+                                                      "Steps per world before it counts as unsolved [the scale's: " +
+                                                          std::to_string(o->step_limit) + " at the calibrated]")
                                           ->check(positive_integer()));
-  cmd->add_option("--seed", o->seed, "Random seed (the worlds, and the robot's stream) [1]")->check(unsigned_integer());
+  const CLI::Option* seed = cmd->add_option("--seed", o->seed,
+                                            "Random seed (the worlds, and the robot's stream) [1; with --calibrate "
+                                            "the calibration's own, " + std::to_string(bench::SinsCalibrationSettings{}.seed) + "]")
+                                ->check(unsigned_integer());
+  std::string scales;
+  for (const nav::SinsScale& s : nav::kSinsScales) {
+    scales += std::string(scales.empty() ? "" : "; ") + std::string(s.name) + ": " + std::string(s.what);
+  }
+  cmd->add_option("--scale", o->scale, "The worlds' scale against the robot and the step limit (" + scales + ") [" +
+                                           std::string(nav::kCalibratedScale.name) + "]");
+  cmd->add_flag("--calibrate", o->calibrate,
+                "Search the scale at which the static and random systems solve the paper's 14.5% and 41.5% "
+                "(docs/sins.md, \"The calibrated scale\"); exit 1 if it cannot");
   cmd->add_option("--param", o->params,
                   "Run, schema or case parameter name=value (repeatable): obstacle_gain (the static system's and "
                   "where the adaptive starts), change_at, clutter_after, learning_rate, ...; an unknown name lists "
@@ -214,7 +280,7 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                   "Directory for record.json, learning.svg (Figure 5, all three systems) and run.svg (Figure 4)");
   cmd->add_flag("--json", o->json, "Print the record as one flat JSON object");
   cmd->add_flag("--force", o->force, "Overwrite existing output files");
-  cmd->callback([o, &exit_code] { exit_code = run_sins_command(*o); });
+  cmd->callback([o, seed, &exit_code] { exit_code = o->calibrate ? run_calibration(*o, seed) : run_sins_command(*o); });
 }
 
 }  // namespace amp::cli

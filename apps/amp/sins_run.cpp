@@ -101,6 +101,8 @@ nlohmann::ordered_json full_record(const SinsSetup& setup, const SinsResult& r) 
   settings["system"] = setup.system;
   settings["seed"] = setup.seed;
   for (const auto& [name, value] : nav::SinsSettings::schema().values(setup.sins)) settings[name] = param_json(value);
+  settings["width"] = setup.sins.world.width;  // the box, which --scale sets (it is no parameter)
+  settings["height"] = setup.sins.world.height;
   for (const auto& [name, value] : learn::CaseSettings::schema().values(setup.cases)) settings[name] = param_json(value);
   for (const auto& [name, value] : nav::SchemaParameters::schema().values(setup.initial)) {
     settings[name] = param_json(value);

@@ -197,4 +197,41 @@ TEST_F(CliErrors, SinsMatchesRunSequence) {
   EXPECT_EQ(record.at("rejected_worlds"), expected.rejected_worlds);
 }
 
+// --scale classic is the 40 m arena's world and 1000 steps: the same worlds as run_sequence at
+// set_scale(kClassicScale); the default is the calibrated scale; a given --step-limit still wins.
+TEST_F(CliErrors, SinsScaleChoosesTheWorldAndStepLimit) {
+  const RunResult r = run("sins --worlds 3 --seed 5 --scale classic --system static -o classic");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json record = nlohmann::json::parse(read_file(dir_ / "classic" / "record.json"));
+  amp::nav::SinsSettings settings;
+  settings.set_scale(amp::nav::kClassicScale);
+  settings.worlds = 3;
+  EXPECT_DOUBLE_EQ(settings.world.width, 40.0);
+  EXPECT_EQ(settings.step_limit, 1000);
+  const auto policy = amp::nav::make_parameter_policy("static", amp::learn::CaseSettings{},
+                                                      amp::nav::SchemaParameters::middle(), settings.stall_exploration);
+  const amp::nav::SequenceOutcome expected = amp::nav::run_sequence(*policy, settings, 5);
+  ASSERT_EQ(record.at("world_outcomes").size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(record.at("world_outcomes")[i].at("steps").get<int>(), expected.worlds[i].steps) << i;
+    EXPECT_DOUBLE_EQ(record.at("world_outcomes")[i].at("optimal").get<double>(), expected.worlds[i].optimal) << i;
+  }
+  EXPECT_EQ(record.at("settings").at("step_limit"), 1000);
+  EXPECT_EQ(record.at("settings").at("max_radius"), 2.0);
+
+  const RunResult def = run("sins --worlds 2 --seed 5 --system static -o default");
+  ASSERT_EQ(def.exit_code, 0) << def.err;
+  const nlohmann::json d = nlohmann::json::parse(read_file(dir_ / "default" / "record.json"));
+  EXPECT_EQ(d.at("settings").at("step_limit"), amp::nav::kCalibratedScale.step_limit);
+  EXPECT_DOUBLE_EQ(d.at("settings").at("max_radius").get<double>(), 2.0 * amp::nav::kCalibratedScale.factor);
+
+  const RunResult limit = run("sins --worlds 2 --seed 5 --scale classic --step-limit 50 --system static -o limit");
+  ASSERT_EQ(limit.exit_code, 0) << limit.err;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir_ / "limit" / "record.json")).at("settings").at("step_limit"), 50);
+}
+
+TEST_F(CliErrors, SinsUnknownScaleIsOneLine) {
+  expect_input_error(run("sins --worlds 2 --scale huge"), {"--scale", "unknown scale 'huge'", "calibrated, classic"});
+}
+
 }  // namespace

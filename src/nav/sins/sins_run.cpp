@@ -42,10 +42,10 @@ const core::SettingsSchema<SinsSettings>& SinsSettings::schema() {
                            "m beyond the rim within which obstacles repel (and the sensors' range)"),
        core::real_field<S>("max_speed", [](S& s) -> double& { return s.motor.max_speed; }, 0, 1e3,
                            "m per step the robot moves at most"),
-       core::real_field<S>("width", [](S& s) -> double& { return s.world.width; }, 0, 1e4,
-                           "m, the clutter box's extent along x (start and goal lie along the longer side)"),
-       core::real_field<S>("height", [](S& s) -> double& { return s.world.height; }, 0, 1e4,
-                           "m, the clutter box's extent along y")});
+       core::real_field<S>("min_radius", [](S& s) -> double& { return s.world.min_radius; }, 0, 1e4,
+                           "m, the smallest circle's radius (radii are uniform in [min_radius, max_radius])"),
+       core::real_field<S>("max_radius", [](S& s) -> double& { return s.world.max_radius; }, 0, 1e4,
+                           "m, the largest circle's radius")});
   return schema;
 }
 
@@ -166,6 +166,50 @@ WorldOutcome run_world(const ClutterWorld& world, int index, ParameterPolicy& po
   }
   out.min_clearance = std::max(0.0, out.min_clearance);
   out.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+const SinsScale& sins_scale(std::string_view name) {
+  std::string names;
+  for (const SinsScale& s : kSinsScales) {
+    if (s.name == name) return s;
+    names += (names.empty() ? "" : ", ") + std::string(s.name);
+  }
+  throw ParameterError("sins: unknown scale '" + std::string(name) + "' (valid: " + names + ")");
+}
+
+SequenceWorlds draw_sequence_worlds(const SinsSettings& settings, std::uint64_t seed) {
+  settings.validate();
+  ClutterWorldSequence sequence(seed, settings.world);
+  SequenceWorlds out;
+  out.worlds.reserve(static_cast<std::size_t>(settings.worlds));
+  for (int i = 0; i < settings.worlds; ++i) {
+    try {
+      if (settings.change_at > 0 && i == settings.change_at) sequence.set_clutter(settings.clutter_after);
+      out.worlds.push_back(sequence.next());
+    } catch (const ParameterError& e) {
+      throw ParameterError("world " + std::to_string(i + 1) + ": " + e.what());
+    }
+  }
+  out.rejected = sequence.rejected_total();
+  return out;
+}
+
+SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settings, std::uint64_t seed,
+                             const SequenceWorlds& worlds, const core::StopCondition* stop) {
+  settings.validate();
+  core::Rng rng(core::derive_seed(seed, kRobotStream));
+  SequenceOutcome out;
+  out.worlds.reserve(worlds.worlds.size());
+  for (std::size_t i = 0; i < worlds.worlds.size(); ++i) {
+    if (stop != nullptr && stop->time_up()) {
+      out.stopped = true;
+      break;
+    }
+    out.worlds.push_back(run_world(worlds.worlds[i], static_cast<int>(i), policy, settings, rng, stop));
+  }
+  out.rejected_worlds = worlds.rejected;
+  out.cases = policy.cases();
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
+#include "amp/learn/case_library.hpp"
 #include "amp/nav/polygon_nav_world.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
 
@@ -191,6 +192,52 @@ TEST(SinsRunSequence, AClutterNoWorldCanHaveIsRefused) {
   s.world.max_tries = 3;
   StaticParameters policy;
   EXPECT_THROW(run_sequence(policy, s, 1), ParameterError);
+}
+
+// The named scales: the classic arena's lengths times the factor, the robot unchanged; the defaults
+// are the calibrated scale's; an unknown name lists the valid ones.
+TEST(SinsScale, NamedScalesSetTheWorldAndStepLimit) {
+  SinsSettings s;
+  EXPECT_DOUBLE_EQ(s.world.width, 40.0 * kCalibratedScale.factor);
+  EXPECT_DOUBLE_EQ(s.world.max_radius, 2.0 * kCalibratedScale.factor);
+  EXPECT_EQ(s.step_limit, kCalibratedScale.step_limit);
+  s.set_scale(sins_scale("classic"));
+  EXPECT_DOUBLE_EQ(s.world.width, 40.0);
+  EXPECT_DOUBLE_EQ(s.world.height, 40.0);
+  EXPECT_DOUBLE_EQ(s.world.min_radius, 0.5);
+  EXPECT_DOUBLE_EQ(s.world.max_radius, 2.0);
+  EXPECT_DOUBLE_EQ(s.world.robot_radius, 0.25);
+  EXPECT_EQ(s.step_limit, 1000);
+  try {
+    sins_scale("huge");
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string(e.what()).find("(valid: calibrated, classic)"), std::string::npos) << e.what();
+  }
+}
+
+// Worlds drawn at once and run give run_sequence's outcomes, across a change of clutter.
+TEST(SinsSequence, PreDrawnWorldsGiveTheStreamingOutcomes) {
+  SinsSettings s;
+  s.worlds = 5;
+  s.step_limit = 150;
+  s.change_at = 3;
+  s.clutter_after = 0.35;
+  const auto stream = make_parameter_policy("adaptive", learn::CaseSettings{}, SchemaParameters::middle(), 0.5);
+  const auto drawn = make_parameter_policy("adaptive", learn::CaseSettings{}, SchemaParameters::middle(), 0.5);
+  const SequenceOutcome a = run_sequence(*stream, s, 11);
+  const SequenceWorlds worlds = draw_sequence_worlds(s, 11);
+  const SequenceOutcome b = run_sequence(*drawn, s, 11, worlds);
+  ASSERT_EQ(a.worlds.size(), b.worlds.size());
+  for (std::size_t i = 0; i < a.worlds.size(); ++i) {
+    EXPECT_EQ(a.worlds[i].steps, b.worlds[i].steps) << i;
+    EXPECT_EQ(a.worlds[i].solved, b.worlds[i].solved) << i;
+    EXPECT_DOUBLE_EQ(a.worlds[i].distance, b.worlds[i].distance) << i;
+    EXPECT_DOUBLE_EQ(a.worlds[i].clutter, b.worlds[i].clutter) << i;
+  }
+  EXPECT_GE(b.worlds[3].clutter, 0.35);
+  EXPECT_EQ(a.rejected_worlds, b.rejected_worlds);
+  EXPECT_EQ(a.cases, b.cases);
 }
 
 }  // namespace

@@ -32,6 +32,16 @@ struct ClutterWorldSettings {
   void validate() const;
   // robot_radius + start_goal_margin: how far start and goal stay from every circle and the box.
   double clearance() const { return robot_radius + start_goal_margin; }
+  // These settings with the world's lengths (the box, the circles' radii) times `factor`; the robot
+  // (its radius and margin) and the reference cell stay: the world's scale against the robot.
+  ClutterWorldSettings scaled(double factor) const {
+    ClutterWorldSettings s = *this;
+    s.width *= factor;
+    s.height *= factor;
+    s.min_radius *= factor;
+    s.max_radius *= factor;
+    return s;
+  }
 };
 
 struct ClutterWorld {

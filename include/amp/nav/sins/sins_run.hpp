@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,11 +19,30 @@ namespace amp::nav {
 
 class ParameterPolicy;
 
+// The scale of the clutter worlds against the robot, which the paper's figures lost: the classic
+// arena (ClutterWorldSettings's defaults: a 40 m box, circles of 0.5-2 m) with its lengths times
+// `factor`, and the step limit. The calibrated scale is the one at which the paper's two baselines
+// solve what they solve in its final table (static 14.5%, random 41.5% at 25% clutter), found by
+// `amp sins --calibrate` (bench::calibrate_sins_scale; docs/sins.md, "The calibrated scale").
+struct SinsScale {
+  std::string_view name;
+  double factor = 1.0;
+  int step_limit = 1000;
+  std::string_view what;
+};
+inline constexpr SinsScale kCalibratedScale{
+    "calibrated", 1.67, 313, "a 66.8 m box, circles of 0.835-3.34 m, 313 steps: the paper's baselines' solved shares (the default)"};
+inline constexpr SinsScale kClassicScale{
+    "classic", 1.0, 1000, "a 40 m box, circles of 0.5-2 m, 1000 steps (AMP's scale before the calibration)"};
+inline constexpr SinsScale kSinsScales[] = {kCalibratedScale, kClassicScale};
+// The scale named `name`; throws ParameterError listing the names for any other.
+const SinsScale& sins_scale(std::string_view name);
+
 // One SINS experiment (Ram & Santamaria 1993, Sec. 3.1): a sequence of clutter worlds driven by a
 // holonomic disc under the motor schemas, with the parameters chosen by a ParameterPolicy.
 struct SinsSettings {
   int worlds = 200;             // worlds in the sequence
-  int step_limit = 1000;        // steps per world before it counts as unsolved (about 30 x a straight crossing)
+  int step_limit = kCalibratedScale.step_limit;  // steps per world before it counts as unsolved
   int control_interval = 12;    // steps between two parameter choices (the paper's best, Sec. 3.2)
   double goal_tolerance = 0.5;  // m between the robot's centre and the goal that counts as arrived
   double virtual_collision_distance = 0.1;  // m from the rim: nearer is a virtual collision
@@ -33,7 +53,17 @@ struct SinsSettings {
   // The adaptive system's least exploration when stalled (CaseBasedParameters; 0: the paper's).
   double stall_exploration = 0.5;
   SchemaSettings motor{};
-  ClutterWorldSettings world{};
+  ClutterWorldSettings world = ClutterWorldSettings{}.scaled(kCalibratedScale.factor);
+
+  // The world and the step limit of `scale` (the rest unchanged).
+  void set_scale(const SinsScale& scale) {
+    const ClutterWorldSettings classic{};
+    world.width = classic.width * scale.factor;
+    world.height = classic.height * scale.factor;
+    world.min_radius = classic.min_radius * scale.factor;
+    world.max_radius = classic.max_radius * scale.factor;
+    step_limit = scale.step_limit;
+  }
 
   // Every scalar above, and world.clutter as `clutter`, for `amp bench` and the command line.
   static const core::SettingsSchema<SinsSettings>& schema();
@@ -98,5 +128,19 @@ inline constexpr std::uint64_t kRobotStream = 0x51a5'0000'0000'0001ULL;
 SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settings, std::uint64_t seed,
                              const core::StopCondition* stop = nullptr,
                              const std::function<void(const WorldOutcome&)>& on_world = {});
+
+// The worlds run_sequence meets, drawn at once: world i of ClutterWorldSequence(seed, settings.world),
+// the clutter switched at change_at. A clutter no world can be drawn at throws ParameterError
+// ("world 3: clutter 0.9: no world with a free path in 100 tries").
+struct SequenceWorlds {
+  std::vector<ClutterWorld> worlds;
+  int rejected = 0;
+};
+SequenceWorlds draw_sequence_worlds(const SinsSettings& settings, std::uint64_t seed);
+// run_sequence over worlds already drawn (so that several systems, or several step limits, meet the
+// same worlds without drawing them again): the same outcomes as run_sequence(policy, settings, seed)
+// when `worlds` is draw_sequence_worlds(settings, seed).
+SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settings, std::uint64_t seed,
+                             const SequenceWorlds& worlds, const core::StopCondition* stop = nullptr);
 
 }  // namespace amp::nav
