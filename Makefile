@@ -39,7 +39,7 @@ arms: build
 	cd $(BUILD) && ctest --output-on-failure -j1 -L '^arms$$'
 
 # Checks too slow for every run: the SINS scale calibration reproduced from scratch
-# (tests/bench/sins_scale_reproduction_test.cpp, about 2.5 minutes).
+# (tests/bench/sins_scale_reproduction_test.cpp, about 5 minutes).
 slow: build
 	cd $(BUILD) && ctest --output-on-failure -j1 -L '^slow$$'
 

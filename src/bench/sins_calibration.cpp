@@ -142,7 +142,7 @@ void SinsCalibrationSettings::validate() const {
   const auto fail = [](const std::string& what) { throw ParameterError("sins calibration: " + what); };
   if (!(static_target > 0.0 && static_target < 1.0)) fail("static target " + number(static_target) + " is outside (0, 1)");
   if (!(random_target > 0.0 && random_target < 1.0)) fail("random target " + number(random_target) + " is outside (0, 1)");
-  if (search_sequences < 1 || sequences < 1 || bisections < 0 || probe_step_limit < 1) {
+  if (search_sequences < 1 || limit_sequences < 1 || sequences < 1 || bisections < 0 || probe_step_limit < 1) {
     fail("sequences, search sequences and the probe step limit must be >= 1, bisections >= 0");
   }
   if (!(factor_low > 0.0 && factor_low < factor_high && std::isfinite(factor_high))) {
@@ -174,16 +174,17 @@ SinsCalibration calibrate_sins_scale(const SinsCalibrationSettings& c,
       (mid.static_solved < c.static_target ? low : high) = mid;
     }
     const double factor = std::round(0.5 * (low.factor + high.factor) / c.factor_step) * c.factor_step;
-    // The step limit again, on the check's own worlds: the search's few sequences read it with
-    // an error of several steps, which moves the random system's share by points.
-    const ScaleProbe chosen = measure(factor, c.search_sequences, c.sequences);
+    // The step limit again, on more worlds than the search's: a few sequences read it with an
+    // error of tens of steps, which moves the random system's share by points. The check's
+    // sequences come after these, so that it measures worlds the limit was not read on.
+    const ScaleProbe chosen = measure(factor, c.search_sequences, c.limit_sequences);
     out.scale = {"calibrated", chosen.factor, chosen.step_limit, ""};
   } catch (const ParameterError& e) {
     out.why = e.what();
     return out;
   }
   const nav::SinsSettings s = at_scale(c.base, out.scale.factor, out.scale.step_limit);
-  const Sequences check = draw(s, c.seed, c.search_sequences, c.sequences);
+  const Sequences check = draw(s, c.seed, c.search_sequences + c.limit_sequences, c.sequences);
   out.static_share = share_of(drive("static", s, check));
   out.random_share = share_of(drive("random", s, check));
   out.reached = out.static_share.holds(c.static_target) && out.random_share.holds(c.random_target);

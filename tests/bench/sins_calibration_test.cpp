@@ -24,6 +24,7 @@ SinsCalibrationSettings quick() {
   SinsCalibrationSettings c;
   c.base.worlds = 12;
   c.search_sequences = 1;
+  c.limit_sequences = 2;
   c.sequences = 3;
   c.bisections = 1;
   c.factor_low = 1.0;
@@ -83,12 +84,12 @@ TEST(SinsCalibration, ProbesCheckAndRepeat) {
     const auto stat = drive("static", at(c, r.probes[i].factor, r.probes[i].step_limit), core::derive_seed(c.seed, 0));
     EXPECT_DOUBLE_EQ(r.probes[i].static_solved, share(stat)) << i;
   }
-  EXPECT_EQ(r.scale.step_limit, quantile_limit(c, r.scale.factor, c.search_sequences, c.sequences));
+  EXPECT_EQ(r.scale.step_limit, quantile_limit(c, r.scale.factor, c.search_sequences, c.limit_sequences));
   EXPECT_DOUBLE_EQ(r.scale.factor, r.probes[3].factor);
   EXPECT_NEAR(std::fmod(r.scale.factor / c.factor_step, 1.0), 0.0, 1e-6);
   ASSERT_EQ(r.static_share.per_sequence.size(), 3u);
   for (int i = 0; i < c.sequences; ++i) {
-    const std::uint64_t seed = core::derive_seed(c.seed, c.search_sequences + i);
+    const std::uint64_t seed = core::derive_seed(c.seed, c.search_sequences + c.limit_sequences + i);
     const nav::SinsSettings s = at(c, r.scale.factor, r.scale.step_limit);
     EXPECT_DOUBLE_EQ(r.static_share.per_sequence[i], share(drive("static", s, seed))) << i;
     EXPECT_DOUBLE_EQ(r.random_share.per_sequence[i], share(drive("random", s, seed))) << i;

@@ -1,7 +1,7 @@
 // The calibrated scale (nav::kCalibratedScale, the default of `amp sins` and of the SINS methods)
 // is what the calibration finds with its default settings: rerunning `amp sins --calibrate` gives
 // the same factor and step limit, and the paper's baselines inside the check's intervals. About
-// 2.5 minutes: label `slow` (`make slow`), outside the default suite.
+// 5 minutes: label `slow` (`make slow`), outside the default suite.
 #include <gtest/gtest.h>
 
 #include "amp/bench/sins_calibration.hpp"

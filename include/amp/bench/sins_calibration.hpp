@@ -21,6 +21,7 @@ struct SinsCalibrationSettings {
   double random_target = 0.415;
   std::uint64_t seed = 20261207;   // the calibration sequences' master seed: used for nothing else
   int search_sequences = 4;        // sequences of base.worlds worlds per factor tried
+  int limit_sequences = 20;        // sequences that read the step limit at the chosen factor
   int sequences = 10;              // sequences of the check at the chosen scale
   double factor_low = 1.0;         // the bracket: the static system must solve less than its
   double factor_high = 2.5;        // share at the low end and more at the high end
@@ -57,8 +58,9 @@ struct SinsCalibration {
   std::string why;                 // one line when not reached
 };
 
-// The search, then the check: on `sequences` fresh sequences of the calibration seed, the step limit
-// read again at the chosen factor (the last probe), then real runs of both systems at that scale. Sequence i of a stage uses the seed derive_seed(seed, i) (the
+// The search; the step limit read again at the chosen factor on `limit_sequences` further sequences
+// (the last probe); then the check: real runs of both systems at that scale on `sequences` fresh
+// sequences of the calibration seed, which neither the search nor the limit has seen. Sequence i of a stage uses the seed derive_seed(seed, i) (the
 // check's start after the search's), and every system meets the same worlds. Deterministic: the
 // result depends only on the settings. `on_probe` (optional) sees each factor as it is measured.
 SinsCalibration calibrate_sins_scale(const SinsCalibrationSettings& settings,

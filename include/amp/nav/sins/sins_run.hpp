@@ -31,7 +31,7 @@ struct SinsScale {
   std::string_view what;
 };
 inline constexpr SinsScale kCalibratedScale{
-    "calibrated", 1.67, 313, "a 66.8 m box, circles of 0.835-3.34 m, 313 steps: the paper's baselines' solved shares (the default)"};
+    "calibrated", 1.67, 298, "a 66.8 m box, circles of 0.835-3.34 m, 298 steps: the paper's baselines' solved shares (the default)"};
 inline constexpr SinsScale kClassicScale{
     "classic", 1.0, 1000, "a 40 m box, circles of 0.5-2 m, 1000 steps (AMP's scale before the calibration)"};
 inline constexpr SinsScale kSinsScales[] = {kCalibratedScale, kClassicScale};
