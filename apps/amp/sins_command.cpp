@@ -40,6 +40,8 @@ struct SinsOptions {
   bool force = false;
   // The named options that are schema parameters, by schema name (they must not also come as --param).
   std::vector<std::pair<std::string, const CLI::Option*>> named;
+  // Options --calibrate has no use for (it searches the scale and the step limit, prints, writes nothing).
+  std::vector<const CLI::Option*> not_calibrated;
 };
 
 constexpr double kProgressAfterS = 1.0;  // short runs draw no bar (nothing to wait for)
@@ -178,6 +180,15 @@ std::string share_text(const bench::SolvedShare& s) {
 // `amp sins --calibrate`: bench::calibrate_sins_scale from the command's settings (its clutter, worlds,
 // ...), each factor printed as it is measured. Not reaching the targets is an error (exit 1).
 int run_calibration(const SinsOptions& o, const CLI::Option* seed_option) {
+  const std::string unused = " (the calibration searches the scale and the step limit, and writes nothing)";
+  for (const CLI::Option* option : o.not_calibrated) {
+    if (option->count() > 0) throw ParameterError("--calibrate: " + option->get_name() + " is not taken with it" + unused);
+  }
+  for (const auto& [name, value] : parse_params(o.params)) {
+    if (name == "step_limit" || name == "min_radius" || name == "max_radius") {
+      throw ParameterError("--calibrate: --param " + name + " is not taken with it" + unused);
+    }
+  }
   bench::SinsCalibrationSettings c;
   c.base = read_setup(o).sins;
   if (seed_option->count() > 0) c.seed = o.seed;
@@ -235,8 +246,9 @@ void add_sins_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("sins", "SINS (Ram & Santamaria): a disc driven by motor schemas through "
                                              "clutter worlds, the parameters static, random or adapted from cases; "
                                              "the six estimators, Figures 4 and 5");
-  cmd->add_option("--system", o->system, "How the schema parameters are chosen: static, random or adaptive [adaptive]")
-      ->check(CLI::IsMember({"static", "random", "adaptive"}));
+  o->not_calibrated.push_back(
+      cmd->add_option("--system", o->system, "How the schema parameters are chosen: static, random or adaptive [adaptive]")
+          ->check(CLI::IsMember({"static", "random", "adaptive"})));
   o->named.emplace_back("worlds", cmd->add_option("--worlds", o->worlds, "Worlds in the sequence [" +
                                                                            std::to_string(o->worlds) + "]")
                                       ->check(positive_integer()));
@@ -259,6 +271,7 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                                                       "Steps per world before it counts as unsolved [the scale's: " +
                                                           std::to_string(o->step_limit) + " at the calibrated]")
                                           ->check(positive_integer()));
+  o->not_calibrated.push_back(o->named.back().second);
   const CLI::Option* seed = cmd->add_option("--seed", o->seed,
                                             "Random seed (the worlds, and the robot's stream) [1; with --calibrate "
                                             "the calibration's own, " + std::to_string(bench::SinsCalibrationSettings{}.seed) + "]")
@@ -267,8 +280,10 @@ void add_sins_command(CLI::App& app, int& exit_code) {
   for (const nav::SinsScale& s : nav::kSinsScales) {
     scales += std::string(scales.empty() ? "" : "; ") + std::string(s.name) + ": " + std::string(s.what);
   }
-  cmd->add_option("--scale", o->scale, "The worlds' scale against the robot and the step limit (" + scales + ") [" +
-                                           std::string(nav::kCalibratedScale.name) + "]");
+  o->not_calibrated.push_back(cmd->add_option(
+      "--scale", o->scale,
+      "The worlds' scale against the robot and the step limit (" + scales + ") [" +
+          std::string(nav::kCalibratedScale.name) + "]"));
   cmd->add_flag("--calibrate", o->calibrate,
                 "Search the scale at which the static and random systems solve the paper's 14.5% and 41.5% "
                 "(docs/sins.md, \"The calibrated scale\"); exit 1 if it cannot");
@@ -276,10 +291,11 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                   "Run, schema or case parameter name=value (repeatable): obstacle_gain (the static system's and "
                   "where the adaptive starts), change_at, clutter_after, learning_rate, ...; an unknown name lists "
                   "them all");
-  cmd->add_option("-o,--output", o->output,
-                  "Directory for record.json, learning.svg (Figure 5, all three systems) and run.svg (Figure 4)");
-  cmd->add_flag("--json", o->json, "Print the record as one flat JSON object");
-  cmd->add_flag("--force", o->force, "Overwrite existing output files");
+  o->not_calibrated.push_back(cmd->add_option(
+      "-o,--output", o->output,
+      "Directory for record.json, learning.svg (Figure 5, all three systems) and run.svg (Figure 4)"));
+  o->not_calibrated.push_back(cmd->add_flag("--json", o->json, "Print the record as one flat JSON object"));
+  o->not_calibrated.push_back(cmd->add_flag("--force", o->force, "Overwrite existing output files"));
   cmd->callback([o, seed, &exit_code] { exit_code = o->calibrate ? run_calibration(*o, seed) : run_sins_command(*o); });
 }
 

@@ -97,4 +97,17 @@ TEST_F(SinsErrors, OutputDirectoryWithoutItsParent) {
   EXPECT_FALSE(fs::exists(dir_ / "missing"));
 }
 
+// --calibrate searches the scale and the step limit and writes nothing: options it would ignore are
+// refused in one line, before any work.
+TEST_F(SinsErrors, CalibrateRefusesWhatItWouldIgnore) {
+  for (const char* args : {"--calibrate --scale classic", "--calibrate --system static", "--calibrate --json",
+                           "--calibrate --param max_radius=3", "--calibrate --step-limit 50"}) {
+    const RunResult r = run(std::string("sins ") + args);
+    expect_input_error(r, {"--calibrate: ", "is not taken with it"});
+    EXPECT_EQ(r.out, "") << args;
+  }
+  expect_input_error(run("sins --calibrate -o out"), {"--calibrate: --output"});
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 }  // namespace
