@@ -1,6 +1,7 @@
 // bench::calibrate_sins_scale on short sequences: each factor's step limit is the random system's
 // quantile read independently from nav::run_sequence, the check is real runs at the chosen scale
-// on the fresh sequences, the result repeats, and targets no scale reaches are one line.
+// on the fresh sequences (so the result repeats: every figure is recomputed from its seed through
+// another code path and must be equal), and targets no scale reaches are one line.
 #include "amp/bench/sins_calibration.hpp"
 
 #include <algorithm>
@@ -68,16 +69,17 @@ int quantile_limit(const SinsCalibrationSettings& c, double factor, int first, i
   return need <= steps.size() ? steps[need - 1] : -1;
 }
 
-TEST(SinsCalibration, ProbesCheckAndRepeat) {
+TEST(SinsCalibration, ProbesAndCheckEqualIndependentRuns) {
   SinsCalibrationSettings c = quick();
-  // Targets this small sample brackets between the bracket's ends (measured on seed 77: 0% at 1, 16.7% at 2).
+  // Targets this small sample brackets between the bracket's ends (measured on seed 77: 0% at 1, 16.7% at 2 with GCC;
+  // a clang build's simulation differs in rounding, and its shares bracket 10% too).
   c.static_target = 0.1;
   const SinsCalibration r = calibrate_sins_scale(c);
   ASSERT_TRUE(r.why.empty() || r.scale.step_limit > 0) << r.why;
   ASSERT_EQ(r.probes.size(), 4u) << r.why;  // both ends, one bisection, the check's own limit
-  EXPECT_DOUBLE_EQ(r.probes[0].factor, 1.0);
-  EXPECT_DOUBLE_EQ(r.probes[1].factor, 2.0);
-  EXPECT_DOUBLE_EQ(r.probes[2].factor, 1.5);
+  EXPECT_DOUBLE_EQ(r.probes[0].factor, c.factor_low);
+  EXPECT_DOUBLE_EQ(r.probes[1].factor, c.factor_high);
+  EXPECT_DOUBLE_EQ(r.probes[2].factor, 0.5 * (c.factor_low + c.factor_high));
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(r.probes[i].step_limit, quantile_limit(c, r.probes[i].factor, 0, c.search_sequences)) << i;
     EXPECT_GE(r.probes[i].random_solved, c.random_target) << i;
@@ -87,7 +89,7 @@ TEST(SinsCalibration, ProbesCheckAndRepeat) {
   EXPECT_EQ(r.scale.step_limit, quantile_limit(c, r.scale.factor, c.search_sequences, c.limit_sequences));
   EXPECT_DOUBLE_EQ(r.scale.factor, r.probes[3].factor);
   EXPECT_NEAR(std::fmod(r.scale.factor / c.factor_step, 1.0), 0.0, 1e-6);
-  ASSERT_EQ(r.static_share.per_sequence.size(), 3u);
+  ASSERT_EQ(r.static_share.per_sequence.size(), static_cast<std::size_t>(c.sequences));
   for (int i = 0; i < c.sequences; ++i) {
     const std::uint64_t seed = core::derive_seed(c.seed, c.search_sequences + c.limit_sequences + i);
     const nav::SinsSettings s = at(c, r.scale.factor, r.scale.step_limit);
@@ -99,14 +101,6 @@ TEST(SinsCalibration, ProbesCheckAndRepeat) {
   EXPECT_EQ(r.reached, r.static_share.holds(c.static_target) && r.random_share.holds(c.random_target));
   EXPECT_EQ(r.reached, r.why.empty()) << r.why;
 
-  const SinsCalibration again = calibrate_sins_scale(c);
-  ASSERT_EQ(again.probes.size(), r.probes.size());
-  for (std::size_t i = 0; i < r.probes.size(); ++i) {
-    EXPECT_EQ(again.probes[i].step_limit, r.probes[i].step_limit);
-    EXPECT_EQ(again.probes[i].static_solved, r.probes[i].static_solved);
-  }
-  EXPECT_EQ(again.static_share.per_sequence, r.static_share.per_sequence);
-  EXPECT_EQ(again.random_share.per_sequence, r.random_share.per_sequence);
 }
 
 TEST(SinsCalibration, TargetOutsideTheBracketIsOneLine) {
