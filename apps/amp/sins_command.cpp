@@ -1,8 +1,9 @@
 // `amp sins`: SINS (Ram & Santamaria 1993): a sequence of clutter worlds driven by a disc under the
-// motor schemas, the parameters chosen by the static, random or adaptive (case-based) system; prints
+// motor schemas, the parameters chosen by the static, random, adaptive (case-based) or sins-plus system; prints
 // the six estimators, draws the paper's Figures 4 and 5.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -96,22 +97,26 @@ SinsSetup read_setup(const SinsOptions& o) {
   const auto& sins_schema = nav::SinsSettings::schema();
   const auto& motor_schema = nav::SchemaParameters::schema();
   const auto& case_schema = learn::CaseSettings::schema();
-  core::ParamMap sins_given, motor_given, case_given;
+  const auto& plus_schema = learn::SplittingCaseSettings::schema();
+  core::ParamMap sins_given, motor_given, case_given, plus_given;
   for (const auto& [name, value] : parse_params(o.params)) {
+    const bool plus = declared(plus_schema, name);  // max_cases is both the cases' and sins-plus's
+    if (plus) plus_given.insert_or_assign(name, value);
     if (declared(sins_schema, name)) {
       sins_given.insert_or_assign(name, value);
     } else if (declared(motor_schema, name)) {
       motor_given.insert_or_assign(name, value);
     } else if (declared(case_schema, name)) {
       case_given.insert_or_assign(name, value);
-    } else {
-      std::string valid;
-      for (const auto* specs : {&sins_schema.specs(), &motor_schema.specs(), &case_schema.specs()}) {
+    } else if (!plus) {
+      std::vector<std::string> names;
+      for (const auto* specs : {&sins_schema.specs(), &motor_schema.specs(), &case_schema.specs(), &plus_schema.specs()}) {
         for (const core::ParamSpec& s : *specs) {
-          if (!valid.empty()) valid += ", ";
-          valid += s.name;
+          if (std::find(names.begin(), names.end(), s.name) == names.end()) names.push_back(s.name);
         }
       }
+      std::string valid;
+      for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
       throw ParameterError("--param: unknown parameter '" + name + "' (valid: " + valid + ")");
     }
   }
@@ -135,6 +140,7 @@ SinsSetup read_setup(const SinsOptions& o) {
     setup.sins = sins_schema.read(core::Params(sins_schema.owner(), sins_schema.specs(), sins_given));
     setup.initial = motor_schema.read(core::Params(motor_schema.owner(), motor_schema.specs(), motor_given));
     setup.cases = case_schema.read(core::Params(case_schema.owner(), case_schema.specs(), case_given));
+    setup.plus = plus_schema.read(core::Params(plus_schema.owner(), plus_schema.specs(), plus_given));
   } catch (const ParameterError& e) {
     throw ParameterError(std::string("--param: ") + e.what());
   }
@@ -146,12 +152,13 @@ SinsSetup read_setup(const SinsOptions& o) {
     if (name == "clutter") setup.sins.world.clutter = o.clutter;
     if (name == "control_interval") setup.sins.control_interval = o.control_interval;
     if (name == "step_limit") setup.sins.step_limit = o.step_limit;
-    if (name == "max_cases") setup.cases.max_cases = o.max_cases;
+    if (name == "max_cases") setup.cases.max_cases = setup.plus.max_cases = o.max_cases;
     if (name == "case_length") setup.cases.case_length = o.case_length;
   }
   try {
     setup.sins.validate();
     setup.cases.validate();
+    setup.plus.validate();
     setup.initial.validate();
   } catch (const ParameterError& e) {
     // Named after the option that set the parameter the message names, else --param.
@@ -247,8 +254,9 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                                              "clutter worlds, the parameters static, random or adapted from cases; "
                                              "the six estimators, Figures 4 and 5");
   o->not_calibrated.push_back(
-      cmd->add_option("--system", o->system, "How the schema parameters are chosen: static, random or adaptive [adaptive]")
-          ->check(CLI::IsMember({"static", "random", "adaptive"})));
+      cmd->add_option("--system", o->system, "How the schema parameters are chosen: static, random, adaptive (SINS) or sins-plus (AMP's "
+                      "horizon credit and splitting cases, docs/sins.md) [adaptive]")
+          ->check(CLI::IsMember({"static", "random", "adaptive", "sins-plus"})));
   o->named.emplace_back("worlds", cmd->add_option("--worlds", o->worlds, "Worlds in the sequence [" +
                                                                            std::to_string(o->worlds) + "]")
                                       ->check(positive_integer()));
@@ -256,7 +264,7 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                                                    "Fraction of the box covered by circles, in (0, 1) [0.25]")
                                        ->check(open_unit_interval()));
   o->named.emplace_back("max_cases", cmd->add_option("--max-cases", o->max_cases,
-                                                     "Adaptive: no case is created beyond this many [" +
+                                                     "Adaptive and sins-plus: no case is created beyond this many [" +
                                                          std::to_string(o->max_cases) + "]")
                                          ->check(positive_integer()));
   o->named.emplace_back("case_length", cmd->add_option("--case-length", o->case_length,

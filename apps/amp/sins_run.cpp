@@ -22,6 +22,15 @@ const std::vector<std::string>& systems() {
   return s;
 }
 
+// The systems run, in the paper's order, then any beyond the paper's (sins-plus, when chosen).
+std::vector<std::string> figure_order(const SinsResult& r) {
+  std::vector<std::string> order = systems();
+  for (const SystemRun& run : r.runs) {
+    if (std::find(order.begin(), order.end(), run.system) == order.end()) order.push_back(run.system);
+  }
+  return order;
+}
+
 // A number as JSON, null when not finite (JSON has no infinity).
 nlohmann::ordered_json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nullptr; }
 
@@ -57,7 +66,7 @@ SystemRun run_system(const SinsSetup& setup, const std::string& system, const st
                      const std::function<void()>& world_done) {
   SystemRun run;
   run.system = system;
-  const std::unique_ptr<nav::ParameterPolicy> policy = nav::make_parameter_policy(system, setup.cases, setup.initial, setup.sins.stall_exploration);
+  const std::unique_ptr<nav::ParameterPolicy> policy = nav::make_parameter_policy(system, setup.cases, setup.initial, setup.sins.stall_exploration, setup.plus);
   core::Rng rng(core::derive_seed(setup.seed, nav::kRobotStream));
   run.worlds.reserve(worlds.size());
   for (std::size_t i = 0; i < worlds.size(); ++i) {
@@ -104,6 +113,11 @@ nlohmann::ordered_json full_record(const SinsSetup& setup, const SinsResult& r) 
   settings["width"] = setup.sins.world.width;  // the box, which --scale sets (it is no parameter)
   settings["height"] = setup.sins.world.height;
   for (const auto& [name, value] : learn::CaseSettings::schema().values(setup.cases)) settings[name] = param_json(value);
+  if (setup.system == "sins-plus") {
+    for (const auto& [name, value] : learn::SplittingCaseSettings::schema().values(setup.plus)) {
+      settings[name] = param_json(value);
+    }
+  }
   for (const auto& [name, value] : nav::SchemaParameters::schema().values(setup.initial)) {
     settings[name] = param_json(value);
   }
@@ -207,7 +221,7 @@ void write_sins_outputs(const SinsSetup& setup, const SinsResult& r, const std::
 
   // Figure 5 in the paper's order of the systems, whichever was chosen.
   std::vector<viz::SinsCurves> curves;
-  for (const std::string& s : systems()) {
+  for (const std::string& s : figure_order(r)) {
     for (const SystemRun& run : r.runs) {
       if (run.system != s) continue;
       viz::SinsCurves c{run.system, {}};
@@ -256,7 +270,7 @@ std::string format_sins_comparison(const SinsResult& r) {
   std::snprintf(line, sizeof line, "  %-9s %7s %9s %10s %10s %10s %10s %6s\n", "system", "solved", "steps",
                 "distance", "ratio", "virt.coll", "ms/world", "cases");
   out << line;
-  for (const std::string& s : systems()) {
+  for (const std::string& s : figure_order(r)) {
     for (const SystemRun& run : r.runs) {
       if (run.system != s) continue;
       const nav::Estimators& e = run.estimators;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "amp/learn/case_library.hpp"
+#include "amp/learn/splitting_cases.hpp"
 #include "amp/nav/sins/clutter_world.hpp"
 #include "amp/nav/sins/motor_schemas.hpp"
 #include "amp/nav/sins/sins_run.hpp"
@@ -19,6 +20,7 @@ struct SinsSetup {
   std::string system = "adaptive";  // the system whose result is printed
   nav::SinsSettings sins;
   learn::CaseSettings cases;
+  learn::SplittingCaseSettings plus;  // sins-plus's (its max_cases is the cases' max_cases)
   nav::SchemaParameters initial = nav::SchemaParameters::middle();  // the static system's, where SINS starts
   std::uint64_t seed = 1;
   std::function<void(int done, int total)> progress;  // worlds driven, over every system run

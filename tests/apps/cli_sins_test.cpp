@@ -1,6 +1,7 @@
 // `amp sins` end to end on short sequences: the record's keys and consistency, the same seed giving
 // the same record, the files of -o DIR (and no overwriting without --force), every system meeting
 // the same worlds, and the command's worlds being exactly nav::run_sequence's.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,6 +12,7 @@
 
 #include "amp/learn/case_library.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
+#include "amp/nav/sins/sins_plus_parameters.hpp"
 #include "amp/nav/sins/sins_run.hpp"
 #include "support/cli_errors_fixture.hpp"
 
@@ -195,6 +197,38 @@ TEST_F(CliErrors, SinsMatchesRunSequence) {
   EXPECT_GE(record.at("world_outcomes")[2].at("clutter").get<double>(), 0.35);  // the change
   EXPECT_EQ(record.at("cases"), expected.cases);
   EXPECT_EQ(record.at("rejected_worlds"), expected.rejected_worlds);
+}
+
+// --system sins-plus runs SplittingCaseParameters with the --param settings it is given (max_cases
+// shared with the adaptive system's), on run_sequence's worlds, and records those settings.
+TEST_F(CliErrors, SinsPlusMatchesRunSequence) {
+  const RunResult r = run(kQuick + " --system sins-plus --param horizon=3 --param exploration=0.3 --max-cases 2 -o plus");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json record = nlohmann::json::parse(read_file(dir_ / "plus" / "record.json"));
+  amp::nav::SinsSettings settings;
+  settings.worlds = 4;
+  settings.step_limit = 200;
+  amp::learn::SplittingCaseSettings plus;
+  plus.horizon = 3;
+  plus.exploration = 0.3;
+  plus.max_cases = 2;
+  amp::nav::SplittingCaseParameters policy(plus);
+  const amp::nav::SequenceOutcome expected = amp::nav::run_sequence(policy, settings, 3);
+  ASSERT_EQ(record.at("world_outcomes").size(), expected.worlds.size());
+  for (std::size_t i = 0; i < expected.worlds.size(); ++i) {
+    EXPECT_EQ(record.at("world_outcomes")[i].at("steps").get<int>(), expected.worlds[i].steps) << i;
+    EXPECT_DOUBLE_EQ(record.at("world_outcomes")[i].at("distance").get<double>(), expected.worlds[i].distance) << i;
+  }
+  EXPECT_EQ(record.at("system"), "sins-plus");
+  EXPECT_EQ(record.at("settings").at("horizon"), 3);
+  EXPECT_EQ(record.at("settings").at("max_cases"), 2);
+  EXPECT_TRUE(record.at("systems").contains("sins-plus"));
+  EXPECT_TRUE(record.at("systems").contains("adaptive"));  // -o runs the paper's three beside it
+
+  const RunResult bad = run(kQuick + " --system sins-plus --param horizon=0");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("horizon"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
 // --scale classic is the 40 m arena's world and 1000 steps: the same worlds as run_sequence at

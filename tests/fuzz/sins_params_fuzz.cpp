@@ -15,13 +15,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const amp::world::Problem arena =
       amp::world::load_problem(std::filesystem::path(AMP_SOURCE_DIR) / "tests/fuzz/fixtures/sins-small-arena.yaml");
   if (size == 0) return 0;
-  const char* systems[] = {"static", "random", "sins"};
+  const char* systems[] = {"static", "random", "sins", "sins-plus"};
   std::vector<std::string> items;
   std::istringstream lines(std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
   for (std::string line; std::getline(lines, line);) items.push_back(line);
   amp::fuzz::expect_amp_errors_only([&] {
     const amp::core::ParamMap params = amp::cli::parse_params(items);
-    amp::nav::execute_navigation(arena, systems[data[0] % 3], params, 1, (data[0] & 4) != 0 ? 0.05 : 0.0);
+    amp::nav::execute_navigation(arena, systems[data[0] % 4], params, 1, (data[0] & 4) != 0 ? 0.05 : 0.0);
   });
   return 0;
 }

@@ -4,6 +4,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
+#include "amp/nav/sins/sins_plus_parameters.hpp"
 
 namespace amp::nav {
 
@@ -96,11 +97,13 @@ void CaseBasedParameters::end_world(bool solved, double steps_fraction) {
 }
 
 std::unique_ptr<ParameterPolicy> make_parameter_policy(const std::string& system, const learn::CaseSettings& cases,
-                                                       const SchemaParameters& initial, double stall_exploration) {
+                                                       const SchemaParameters& initial, double stall_exploration,
+                                                       const learn::SplittingCaseSettings& plus) {
   if (system == "static") return std::make_unique<StaticParameters>(initial);
   if (system == "random") return std::make_unique<RandomParameters>();
   if (system == "adaptive" || system == "sins") return std::make_unique<CaseBasedParameters>(cases, initial, stall_exploration);
-  throw ParameterError("unknown system '" + system + "' (systems: static, random, adaptive)");
+  if (system == "sins-plus") return std::make_unique<SplittingCaseParameters>(plus, initial);
+  throw ParameterError("unknown system '" + system + "' (systems: static, random, adaptive, sins-plus)");
 }
 
 }  // namespace amp::nav

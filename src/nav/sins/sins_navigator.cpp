@@ -22,12 +22,14 @@ constexpr double kOriginTolerance = 1e-9;
 }  // namespace
 
 SinsNavigator::SinsNavigator(std::string system, SinsSettings settings, SchemaParameters initial,
-                             learn::CaseSettings cases)
-    : system_(std::move(system)), settings_(settings), initial_(initial), cases_(cases) {
+                             learn::CaseSettings cases, learn::SplittingCaseSettings plus)
+    : system_(std::move(system)), settings_(settings), initial_(initial), cases_(cases), plus_(plus) {
   settings_.validate();
   initial_.validate();
   cases_.validate();
-  make_parameter_policy(system_, cases_, initial_, settings_.stall_exploration);  // an unknown system fails here, not in a run
+  plus_.validate();
+  // An unknown system fails here, not in a run.
+  make_parameter_policy(system_, cases_, initial_, settings_.stall_exploration, plus_);
 }
 
 SinsSettings SinsNavigator::arena_settings(const SinsSettings& settings, const NavTask& task) {
@@ -58,7 +60,8 @@ NavigationOutcome SinsNavigator::run(const NavTask& task, const core::StopCondit
   const SinsSettings settings = arena_settings(settings_, task);
   // The run's one draw: the sequence's seed (worlds and robot), so everything depends on the run's seed.
   const std::uint64_t seed = rng.next_u64();
-  std::unique_ptr<ParameterPolicy> policy = make_parameter_policy(system_, cases_, initial_, settings_.stall_exploration);
+  std::unique_ptr<ParameterPolicy> policy =
+      make_parameter_policy(system_, cases_, initial_, settings_.stall_exploration, plus_);
   const SequenceOutcome seq = run_sequence(*policy, settings, seed, &stop);
 
   NavigationOutcome out;
@@ -87,17 +90,23 @@ void register_sins(NavigatorRegistry& registry) {
     const char* what;
     bool initial;        // reads the schema parameters (the random system draws its own)
     bool cases;          // reads the case settings
+    bool plus;           // reads sins-plus's settings
   };
   static constexpr System kSystems[] = {
       {"static", "static",
        "the static system: fixed motor-schema parameters (obstacle_gain, goal_gain, noise_gain, noise_persistence)",
-       true, false},
+       true, false, false},
       {"random", "random", "the random system: every schema parameter drawn anew after each control interval", false,
-       false},
+       false, false},
       {"sins", "adaptive",
        "SINS: case-based reasoning and reinforcement learning choose the schema parameters every control interval, "
        "the cases carried from world to world",
-       true, true},
+       true, true, false},
+      {"sins-plus", "sins-plus",
+       "sins-plus (AMP, beyond the paper; docs/sins.md): cases of situations whose outputs learn from the progress "
+       "over a horizon of control intervals, a case split when its situations want opposite outputs; starts from "
+       "the schema parameters given",
+       true, false, true},
   };
   for (const System& sys : kSystems) {
     std::vector<core::ParamSpec> specs = SinsSettings::schema().specs();
@@ -106,6 +115,9 @@ void register_sins(NavigatorRegistry& registry) {
     }
     if (sys.cases) {
       for (const core::ParamSpec& s : learn::CaseSettings::schema().specs()) specs.push_back(s);
+    }
+    if (sys.plus) {
+      for (const core::ParamSpec& s : learn::SplittingCaseSettings::schema().specs()) specs.push_back(s);
     }
     registry.add({sys.name,
                   std::string(sys.what) +
@@ -116,7 +128,8 @@ void register_sins(NavigatorRegistry& registry) {
                    return std::make_unique<SinsNavigator>(
                        sys.policy, SinsSettings::schema().read(p),
                        sys.initial ? SchemaParameters::schema().read(p) : SchemaParameters::middle(),
-                       sys.cases ? learn::CaseSettings::schema().read(p) : learn::CaseSettings{});
+                       sys.cases ? learn::CaseSettings::schema().read(p) : learn::CaseSettings{},
+                       sys.plus ? learn::SplittingCaseSettings::schema().read(p) : learn::SplittingCaseSettings{});
                  });
   }
 }

@@ -107,7 +107,7 @@ NavCase make_case(const std::string& method, int index, const fs::path& dir) {
   test::PlanarOptions o;
   o.disc_only = true;
   o.plan_settings = false;
-  const bool sins = method == "static" || method == "random" || method == "sins";
+  const bool sins = method == "static" || method == "random" || method == "sins" || method == "sins-plus";
   o.map = method == "policy-search" || method == "dwa" || (method == "pgcs" && index % 2 == 1);
   if (o.map) {  // metre-sized rooms, as the unicycle's default limits expect
     o.min_cells = 20, o.max_cells = 40, o.min_cell = 0.05, o.max_cell = 0.1;
@@ -267,11 +267,11 @@ TEST_F(NavProperties, PolicySearchArrivesOnlyAtTheGoalAndNeverPassesThroughAnObs
 
 TEST_F(NavProperties, DwaArrivesOnlyAtTheGoalAndNeverPassesThroughAnObstacle) { expect_driven_runs("dwa", dir_.path()); }
 
-// static, random and sins: each world of the sequence run again with its trace, as run_sequence
+// static, random, sins and sins-plus: each world of the sequence run again with its trace, as run_sequence
 // runs it (SinsNavigator: the sequence's seed is the run's first draw).
 TEST_F(NavProperties, SinsSystemsSolveOnlyWorldsTheyCrossAndNeverPassThroughACircle) {
   int worlds = 0, solved = 0;
-  for (const std::string method : {"static", "random", "sins"}) {
+  for (const std::string method : {"static", "random", "sins", "sins-plus"}) {
     for (int i = 0; i < 12; ++i) {
       const NavCase c = make_case(method, i, dir_.path());
       NavigationOutcome out;
@@ -279,11 +279,11 @@ TEST_F(NavProperties, SinsSystemsSolveOnlyWorldsTheyCrossAndNeverPassThroughACir
       if (out.record.status == core::PlanStatus::kTimeout) continue;
       const core::Params p = params_of(c);
       const SinsSettings settings = SinsNavigator::arena_settings(SinsSettings::schema().read(p), make_nav_task(c.problem));
-      const bool initial = method != "random", cases = method == "sins";
-      const auto policy = make_parameter_policy(method == "sins" ? "adaptive" : method,
-                                                cases ? learn::CaseSettings::schema().read(p) : learn::CaseSettings{},
-                                                initial ? SchemaParameters::schema().read(p) : SchemaParameters::middle(),
-                                                settings.stall_exploration);
+      const bool initial = method != "random", cases = method == "sins", plus = method == "sins-plus";
+      const auto policy = make_parameter_policy(
+          method == "sins" ? "adaptive" : method, cases ? learn::CaseSettings::schema().read(p) : learn::CaseSettings{},
+          initial ? SchemaParameters::schema().read(p) : SchemaParameters::middle(), settings.stall_exploration,
+          plus ? learn::SplittingCaseSettings::schema().read(p) : learn::SplittingCaseSettings{});
       const std::uint64_t seed = core::Rng(c.seed).next_u64();
       ClutterWorldSequence sequence(seed, settings.world);
       core::Rng rng(core::derive_seed(seed, kRobotStream));

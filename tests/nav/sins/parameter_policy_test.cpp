@@ -184,16 +184,20 @@ TEST(ParameterPolicyFactory, NamesTheSystems) {
   EXPECT_EQ(make_parameter_policy("random", {}, SchemaParameters::middle(), 0.3)->name(), "random");
   EXPECT_EQ(make_parameter_policy("adaptive", {}, SchemaParameters::middle(), 0.3)->name(), "adaptive");
   EXPECT_EQ(make_parameter_policy("sins", {}, SchemaParameters::middle(), 0.3)->name(), "adaptive");
+  EXPECT_EQ(make_parameter_policy("sins-plus", {}, SchemaParameters::middle(), 0.3)->name(), "sins-plus");
   try {
     make_parameter_policy("greedy", {}, SchemaParameters::middle(), 0.3);
     FAIL();
   } catch (const ParameterError& e) {
-    EXPECT_EQ(std::string(e.what()), "unknown system 'greedy' (systems: static, random, adaptive)");
+    EXPECT_EQ(std::string(e.what()), "unknown system 'greedy' (systems: static, random, adaptive, sins-plus)");
   }
   EXPECT_THROW(make_parameter_policy("adaptive", {}, SchemaParameters::middle(), 1.5), ParameterError);
   learn::CaseSettings bad;
   bad.max_cases = 0;
   EXPECT_THROW(make_parameter_policy("adaptive", bad, SchemaParameters::middle(), 0.3), ParameterError);
+  learn::SplittingCaseSettings bad_plus;
+  bad_plus.horizon = 0;
+  EXPECT_THROW(make_parameter_policy("sins-plus", {}, SchemaParameters::middle(), 0.3, bad_plus), ParameterError);
 }
 
 }  // namespace

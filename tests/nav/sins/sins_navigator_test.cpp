@@ -24,8 +24,8 @@ namespace {
 const core::ParamMap kSmall = {{"worlds", core::ParamValue(3.0)}, {"step_limit", core::ParamValue(200.0)}};
 constexpr double kNoTimeLimit = 600.0;
 
-TEST(SinsNavigator, TheThreeSystemsAreRegistered) {
-  for (const char* name : {"static", "random", "sins"}) {
+TEST(SinsNavigator, TheSystemsAreRegistered) {
+  for (const char* name : {"static", "random", "sins", "sins-plus"}) {
     ASSERT_TRUE(builtin_navigators().contains(name)) << name;
     EXPECT_NE(builtin_navigators().info(name).help.find("Ram & Santamaria 1993"), std::string::npos) << name;
   }
@@ -40,12 +40,17 @@ TEST(SinsNavigator, TheThreeSystemsAreRegistered) {
   EXPECT_TRUE(has("static", "obstacle_gain"));
   EXPECT_FALSE(has("static", "max_cases"));
   EXPECT_FALSE(has("random", "obstacle_gain"));  // the random system draws its own
-  for (const char* name : {"static", "random", "sins"}) EXPECT_TRUE(has(name, "control_interval")) << name;
+  for (const char* name : {"static", "random", "sins", "sins-plus"}) EXPECT_TRUE(has(name, "control_interval")) << name;
+  EXPECT_TRUE(has("sins-plus", "horizon"));
+  EXPECT_TRUE(has("sins-plus", "max_cases"));
+  EXPECT_TRUE(has("sins-plus", "obstacle_gain"));  // where it starts
+  EXPECT_FALSE(has("sins-plus", "case_length"));   // SINS's, not sins-plus's
+  EXPECT_FALSE(has("sins", "horizon"));
 }
 
 TEST(SinsNavigator, SameSeedGivesTheSameRecord) {
   const world::Problem& arena = test::bundled_problem("sins-arena.yaml");
-  for (const char* method : {"static", "random", "sins"}) {
+  for (const char* method : {"static", "random", "sins", "sins-plus"}) {
     SCOPED_TRACE(method);
     const NavigationOutcome a = execute_navigation(arena, method, kSmall, 7, kNoTimeLimit);
     const NavigationOutcome b = execute_navigation(arena, method, kSmall, 7, kNoTimeLimit);

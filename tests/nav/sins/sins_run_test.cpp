@@ -91,13 +91,13 @@ TEST(SinsRunWorld, StopsAtTheStepLimitUnsolved) {
   EXPECT_NEAR(o.distance, 10.0, 1e-9);
 }
 
-// Generated worlds, all three systems: every position is free for the disc, "solved" means the last
+// Generated worlds, every system: every position is free for the disc, "solved" means the last
 // step passed within the tolerance of the goal, and the counts agree with the trace.
 TEST(SinsRunWorld, NeverPassesThroughAnObstacleAndReachesWhatItSays) {
   SinsSettings s;
   s.step_limit = 400;
   s.worlds = 6;
-  for (const char* system : {"static", "random", "adaptive"}) {
+  for (const char* system : {"static", "random", "adaptive", "sins-plus"}) {
     auto policy = make_parameter_policy(system, {}, SchemaParameters::middle(), 0.3);
     ClutterWorldSequence sequence(17, s.world);
     core::Rng rng(3);
@@ -133,6 +133,12 @@ TEST(SinsRunSequence, TheSameSeedGivesTheSameRunAndEverySystemTheSameWorlds) {
     return run_sequence(*policy, s, 42);
   };
   const SequenceOutcome a = run("adaptive"), b = run("adaptive"), st = run("static");
+  const SequenceOutcome plus = run("sins-plus"), plus_again = run("sins-plus");
+  for (std::size_t i = 0; i < plus.worlds.size(); ++i) {
+    EXPECT_EQ(plus.worlds[i].steps, plus_again.worlds[i].steps);
+    EXPECT_EQ(plus.worlds[i].distance, plus_again.worlds[i].distance);
+    EXPECT_EQ(plus.worlds[i].optimal, st.worlds[i].optimal);
+  }
   ASSERT_EQ(a.worlds.size(), 5u);
   for (std::size_t i = 0; i < a.worlds.size(); ++i) {
     EXPECT_EQ(a.worlds[i].solved, b.worlds[i].solved);

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "amp/learn/case_library.hpp"
+#include "amp/learn/splitting_cases.hpp"
 #include "amp/nav/sins/motor_schemas.hpp"
 
 namespace amp::core {
@@ -114,10 +115,12 @@ class CaseBasedParameters final : public ParameterPolicy {
   bool has_baseline_ = false;
 };
 
-// The system by name: "static" (StaticParameters(initial)), "random", or "adaptive" (also "sins":
-// CaseBasedParameters(cases, initial, stall_exploration), which SinsSettings carries). Throws ParameterError naming the choices for another name.
+// The system by name: "static" (StaticParameters(initial)), "random", "adaptive" (also "sins":
+// CaseBasedParameters(cases, initial, stall_exploration), which SinsSettings carries) or
+// "sins-plus" (SplittingCaseParameters(plus, initial), sins_plus_parameters.hpp). Throws
+// ParameterError naming the choices for another name.
 std::unique_ptr<ParameterPolicy> make_parameter_policy(
     const std::string& system, const learn::CaseSettings& cases, const SchemaParameters& initial,
-    double stall_exploration);
+    double stall_exploration, const learn::SplittingCaseSettings& plus = {});
 
 }  // namespace amp::nav

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "amp/learn/case_library.hpp"
+#include "amp/learn/splitting_cases.hpp"
 #include "amp/nav/navigator.hpp"
 #include "amp/nav/sins/motor_schemas.hpp"
 #include "amp/nav/sins/sins_run.hpp"
@@ -9,7 +10,7 @@
 namespace amp::nav {
 
 // SINS's three systems (Ram & Santamaria 1993, Sec. 3) as `amp bench` navigation methods `static`,
-// `random` and `sins`. One run is one whole sequence of `settings.worlds` clutter worlds
+// `random` and `sins`, and AMP's `sins-plus` (SplittingCaseParameters). One run is one whole sequence of `settings.worlds` clutter worlds
 // (run_sequence) with one ParameterPolicy that lives through it, so what SINS learns carries from
 // world to world as in the paper. The task gives the arena only: the problem's bounds become the box
 // (they must start at (0, 0)) and its disc robot's radius the robot's; the problem must have no
@@ -26,9 +27,10 @@ namespace amp::nav {
 // No trace (the worlds are not the problem's).
 class SinsNavigator final : public Navigator {
  public:
-  // `system`: "static", "random" or "adaptive". Throws ParameterError for bad settings, parameters
-  // or cases (the box is checked in run(), against the task).
-  SinsNavigator(std::string system, SinsSettings settings, SchemaParameters initial, learn::CaseSettings cases);
+  // `system`: "static", "random", "adaptive" or "sins-plus" (`plus` its settings). Throws
+  // ParameterError for bad settings, parameters or cases (the box is checked in run(), against the task).
+  SinsNavigator(std::string system, SinsSettings settings, SchemaParameters initial, learn::CaseSettings cases,
+                learn::SplittingCaseSettings plus = {});
   NavigationOutcome run(const NavTask& task, const core::StopCondition& stop, core::Rng& rng) override;
 
   // The settings for the task's arena: settings.world's box and robot radius from the task. Throws
@@ -40,6 +42,7 @@ class SinsNavigator final : public Navigator {
   SinsSettings settings_;
   SchemaParameters initial_;
   learn::CaseSettings cases_;
+  learn::SplittingCaseSettings plus_;
 };
 
 }  // namespace amp::nav
