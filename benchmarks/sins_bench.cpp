@@ -6,8 +6,12 @@
 //   CaseBasedParameters takes no ready library, so the library is filled by the policy itself: with
 //   a new-case threshold near 1 every full history that matches badly becomes a case, and random
 //   inputs fill the 10 slots in the warm-up (state.counters["cases"] says how many it reached).
-// - BM_AdaptiveSequence: a whole 200-world sequence of the adaptive system at 25% clutter in the
-//   40 m x 40 m box (run_sequence, as one `amp bench` run of `sins`). Target: <= 10 s.
+// - BM_SinsPlusEndInterval: the same for sins-plus (SplittingCaseParameters::end_interval: reward,
+//   retrieve, explore, and every refit_every credited uses a fit or a split), its library grown by
+//   the warm-up (state.counters["cases"]).
+// - BM_AdaptiveSequence, BM_SinsPlusSequence: a whole 200-world sequence of the adaptive system
+//   (sins-plus) at 25% clutter at the calibrated scale (run_sequence, as one `amp bench` run of
+//   `sins`, `sins-plus`). Target: <= 10 s.
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -18,6 +22,7 @@
 #include "amp/core/rng.hpp"
 #include "amp/nav/sins/motor_schemas.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
+#include "amp/nav/sins/sins_plus_parameters.hpp"
 #include "amp/nav/sins/sins_run.hpp"
 
 namespace {
@@ -68,7 +73,17 @@ void BM_CaseBasedEndInterval(benchmark::State& state) {
   state.counters["cases"] = policy.cases();
 }
 
-void BM_AdaptiveSequence(benchmark::State& state) {
+void BM_SinsPlusEndInterval(benchmark::State& state) {
+  amp::nav::SplittingCaseParameters policy;
+  Rng rng(1);
+  policy.begin_world(rng);
+  for (int i = 0; i < kWarmUpIntervals; ++i) policy.end_interval(random_inputs(rng), rng);
+  for (auto _ : state) benchmark::DoNotOptimize(policy.end_interval(random_inputs(rng), rng));
+  state.counters["cases"] = policy.cases();
+}
+
+template <class Policy>
+void BM_Sequence(benchmark::State& state) {
   amp::nav::SinsSettings settings;
   settings.worlds = 200;
   settings.world.clutter = 0.25;
@@ -76,7 +91,7 @@ void BM_AdaptiveSequence(benchmark::State& state) {
   double solved = 0.0;
   int sequences = 0;
   for (auto _ : state) {
-    amp::nav::CaseBasedParameters policy;
+    Policy policy;
     const amp::nav::SequenceOutcome out = amp::nav::run_sequence(policy, settings, seed++);
     solved += amp::nav::estimate(out.worlds, out.worlds.size()).solved_fraction;
     ++sequences;
@@ -87,6 +102,8 @@ void BM_AdaptiveSequence(benchmark::State& state) {
 
 BENCHMARK(BM_MotorSchemaStep)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_CaseBasedEndInterval)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_AdaptiveSequence)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_SinsPlusEndInterval)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Sequence<amp::nav::CaseBasedParameters>)->Name("BM_AdaptiveSequence")->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_Sequence<amp::nav::SplittingCaseParameters>)->Name("BM_SinsPlusSequence")->Unit(benchmark::kSecond)->Iterations(2);
 
 }  // namespace

@@ -301,7 +301,7 @@ void add_sins_command(CLI::App& app, int& exit_code) {
                   "them all");
   o->not_calibrated.push_back(cmd->add_option(
       "-o,--output", o->output,
-      "Directory for record.json, learning.svg (Figure 5, all three systems) and run.svg (Figure 4)"));
+      "Directory for record.json, learning.svg (Figure 5, every system run) and run.svg (Figure 4)"));
   o->not_calibrated.push_back(cmd->add_flag("--json", o->json, "Print the record as one flat JSON object"));
   o->not_calibrated.push_back(cmd->add_flag("--force", o->force, "Overwrite existing output files"));
   cmd->callback([o, seed, &exit_code] { exit_code = o->calibrate ? run_calibration(*o, seed) : run_sins_command(*o); });

@@ -1,6 +1,6 @@
 // SINS's control loop runs every step: the motor schemas, the trends and the adaptive system's
 // cycle (perceive, retrieve, adapt, learn) must not touch the heap, apart from a created case's two
-// vectors. Global operator new is replaced by a counting one in this executable.
+// vectors (sins-plus: a split case's two windows). Global operator new is replaced by a counting one in this executable.
 #include <gtest/gtest.h>
 
 #include "support/counting_allocator.hpp"
@@ -12,6 +12,7 @@
 #include "amp/nav/sins/environment_trends.hpp"
 #include "amp/nav/sins/motor_schemas.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
+#include "amp/nav/sins/sins_plus_parameters.hpp"
 
 namespace amp::nav {
 namespace {
@@ -53,6 +54,31 @@ TEST(SinsCycleAllocation, StepsAndIntervalsAllocateOnlyForCreatedCases) {
     }
     EXPECT_EQ(amp::test::allocations() - before, 2 * created);
   }
+}
+
+// sins-plus's cycle (reward, retrieve, explore, and the fits) allocates only when a case splits: the
+// new case's window and the old one's, rebuilt.
+TEST(SinsCycleAllocation, SinsPlusAllocatesOnlyForSplits) {
+  learn::SplittingCaseSettings ps;
+  ps.horizon = 4;
+  ps.split_t = 0.5;  // eager splits, so that some happen here
+  SplittingCaseParameters plus(ps);
+  core::Rng rng(5);
+  const long before = amp::test::allocations();
+  long created = 0;
+  for (int interval = 1; interval <= 3000; ++interval) {
+    const double regime = (interval / 50) % 3;
+    const learn::CaseInputs in{0.3 * regime, rng.uniform01(), 0.5, rng.uniform(0.2 * regime, 1.0)};
+    const int cases = plus.cases();
+    plus.end_interval(in, rng);
+    if (interval % 40 == 0) {  // the world's end credits what is pending, which can split too
+      plus.end_world(interval % 80 == 0, 0.5);
+      plus.begin_world(rng);
+    }
+    created += plus.cases() - cases;
+  }
+  EXPECT_GT(created, 0);
+  EXPECT_EQ(amp::test::allocations() - before, 2 * created);
 }
 
 }  // namespace
