@@ -57,11 +57,11 @@ struct SinsSettings {
 
   // The world and the step limit of `scale` (the rest unchanged).
   void set_scale(const SinsScale& scale) {
-    const ClutterWorldSettings classic{};
-    world.width = classic.width * scale.factor;
-    world.height = classic.height * scale.factor;
-    world.min_radius = classic.min_radius * scale.factor;
-    world.max_radius = classic.max_radius * scale.factor;
+    const ClutterWorldSettings lengths = ClutterWorldSettings{}.scaled(scale.factor);
+    world.width = lengths.width;
+    world.height = lengths.height;
+    world.min_radius = lengths.min_radius;
+    world.max_radius = lengths.max_radius;
     step_limit = scale.step_limit;
   }
 
