@@ -103,7 +103,13 @@ void BM_Sequence(benchmark::State& state) {
 BENCHMARK(BM_MotorSchemaStep)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_CaseBasedEndInterval)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SinsPlusEndInterval)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Sequence<amp::nav::CaseBasedParameters>)->Name("BM_AdaptiveSequence")->Unit(benchmark::kSecond)->Iterations(2);
-BENCHMARK(BM_Sequence<amp::nav::SplittingCaseParameters>)->Name("BM_SinsPlusSequence")->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_Sequence<amp::nav::CaseBasedParameters>)
+    ->Name("BM_AdaptiveSequence")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(2);
+BENCHMARK(BM_Sequence<amp::nav::SplittingCaseParameters>)
+    ->Name("BM_SinsPlusSequence")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(2);
 
 }  // namespace

@@ -66,7 +66,8 @@ SystemRun run_system(const SinsSetup& setup, const std::string& system, const st
                      const std::function<void()>& world_done) {
   SystemRun run;
   run.system = system;
-  const std::unique_ptr<nav::ParameterPolicy> policy = nav::make_parameter_policy(system, setup.cases, setup.initial, setup.sins.stall_exploration, setup.plus);
+  const std::unique_ptr<nav::ParameterPolicy> policy =
+      nav::make_parameter_policy(system, setup.cases, setup.initial, setup.sins.stall_exploration, setup.plus);
   core::Rng rng(core::derive_seed(setup.seed, nav::kRobotStream));
   run.worlds.reserve(worlds.size());
   for (std::size_t i = 0; i < worlds.size(); ++i) {

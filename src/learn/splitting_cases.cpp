@@ -126,7 +126,8 @@ OutputSlopes SplittingCaseLibrary::fit(const CaseUse* const* uses, int n) {
     out.slope[o] = g(o);
     const double se = std::sqrt(std::max(0.0, s2 * inverse(o, o)));
     // An exact fit (no residual) makes any non-zero slope certain.
-    out.t[o] = se > 0.0 ? g(o) / se : (g(o) != 0.0 ? std::copysign(std::numeric_limits<double>::infinity(), g(o)) : 0.0);
+    constexpr double kCertain = std::numeric_limits<double>::infinity();
+    out.t[o] = se > 0.0 ? g(o) / se : (g(o) != 0.0 ? std::copysign(kCertain, g(o)) : 0.0);
   }
   return out;
 }
@@ -151,7 +152,10 @@ int SplittingCaseLibrary::nearest(const CaseInputs& inputs) const {
   double best_d = std::numeric_limits<double>::infinity();
   for (int j = 0; j < size(); ++j) {
     double d = 0.0;
-    for (int x = 0; x < kCaseInputs; ++x) d += (inputs[x] - cases_[j].prototype[x]) * (inputs[x] - cases_[j].prototype[x]);
+    for (int x = 0; x < kCaseInputs; ++x) {
+      const double e = inputs[x] - cases_[static_cast<std::size_t>(j)].prototype[x];
+      d += e * e;
+    }
     if (d < best_d) best_d = d, best = j;
   }
   return best;

@@ -62,7 +62,8 @@ struct SinsCalibration {
 // (the last probe); then the check: real runs of both systems at that scale on `sequences` fresh
 // sequences of the calibration seed, which neither the search nor the limit has seen. Sequence i of
 // a stage uses the seed derive_seed(seed, i) (the check's start after the search's), and every
-// system meets the same worlds. Deterministic: the result depends only on the settings. `on_probe` (optional) sees each factor as it is measured.
+// system meets the same worlds. Deterministic: the result depends only on the settings. `on_probe`
+// (optional) sees each factor as it is measured.
 SinsCalibration calibrate_sins_scale(const SinsCalibrationSettings& settings,
                                      const std::function<void(const ScaleProbe&)>& on_probe = {});
 

@@ -62,11 +62,12 @@ struct SplittingCase {
 // - Credit: every choice's credit is the mean of the rewards of the `horizon` intervals it starts
 //   (the episode's end fills the rest: `terminal` when given, else the mean of those seen).
 // - Learn: every refit_every credited uses, the case's window is fitted, G ~ c + g . a + h . x
-//   (least squares: the policy gradient of its exploration, the situation x held apart). If some input splits the window at its
-//   median into halves whose slopes on one output are both significant (|t| >= split_t) and of
-//   opposite signs, the case becomes two, one per half (prototype the half's mean inputs), each
-//   stepped along its own half's slopes: the situations want opposite outputs. Otherwise every
-//   output whose slope has |t| >= step_t moves by `step` in the slope's direction.
+//   (least squares: the policy gradient of its exploration, the situation x held apart). If some
+//   input splits the window at its median into halves whose slopes on one output are both
+//   significant (|t| >= split_t) and of opposite signs, the case becomes two, one per half
+//   (prototype the half's mean inputs), each stepped along its own half's slopes: the situations
+//   want opposite outputs. Otherwise every output whose slope has |t| >= step_t moves by `step` in
+//   the slope's direction.
 //
 // choose and reward allocate nothing but when a split creates a case (its window is new, at most
 // max_cases - 1 times): every other buffer is sized up front.

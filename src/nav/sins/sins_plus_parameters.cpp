@@ -4,8 +4,17 @@
 
 namespace amp::nav {
 
+namespace {
+// `initial` as the first case's outputs, checked first, so that a parameter outside its range is
+// named by its schema name rather than reported as an output outside [0, 1].
+learn::CaseOutputs checked_outputs(const SchemaParameters& initial) {
+  initial.validate();
+  return initial.normalised();
+}
+}  // namespace
+
 SplittingCaseParameters::SplittingCaseParameters(learn::SplittingCaseSettings settings, SchemaParameters initial)
-    : library_((initial.validate(), settings), initial.normalised()) {}
+    : library_(settings, checked_outputs(initial)) {}
 
 SchemaParameters SplittingCaseParameters::begin_world(core::Rng& rng) {
   library_.begin_episode();

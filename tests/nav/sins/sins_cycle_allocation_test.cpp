@@ -1,6 +1,7 @@
 // SINS's control loop runs every step: the motor schemas, the trends and the adaptive system's
 // cycle (perceive, retrieve, adapt, learn) must not touch the heap, apart from a created case's two
-// vectors (sins-plus: a split case's two windows). Global operator new is replaced by a counting one in this executable.
+// vectors (sins-plus: a split case's two windows). Global operator new is replaced by a counting
+// one in this executable.
 #include <gtest/gtest.h>
 
 #include "support/counting_allocator.hpp"

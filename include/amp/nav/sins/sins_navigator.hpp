@@ -10,8 +10,8 @@
 namespace amp::nav {
 
 // SINS's three systems (Ram & Santamaria 1993, Sec. 3) as `amp bench` navigation methods `static`,
-// `random` and `sins`, and AMP's `sins-plus` (SplittingCaseParameters). One run is one whole sequence of `settings.worlds` clutter worlds
-// (run_sequence) with one ParameterPolicy that lives through it, so what SINS learns carries from
+// `random` and `sins`, and AMP's `sins-plus` (SplittingCaseParameters). One run is one whole
+// sequence of `settings.worlds` clutter worlds (run_sequence) with one ParameterPolicy that lives through it, so what SINS learns carries from
 // world to world as in the paper. The task gives the arena only: the problem's bounds become the box
 // (they must start at (0, 0)) and its disc robot's radius the robot's; the problem must have no
 // obstacles and no events, since the worlds are drawn by the method. The run's start and goal are
