@@ -16,8 +16,13 @@
 #include "amp/core/error.hpp"
 #include "amp/core/version.hpp"
 #include "amp/nav/navigator_catalog.hpp"
+#include "amp/nav/sins/parameter_policy.hpp"
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
+#include "amp/study/explore_study.hpp"
+#include "amp/study/navigate_study.hpp"
+#include "amp/study/navigation_run.hpp"
+#include "amp/study/sins_study.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "amp/world/problem.hpp"
 
@@ -72,17 +77,99 @@ py::tuple plan(const amp::world::Problem& problem, const std::string& planner, s
   return py::make_tuple(to_dict(run.record), states(path));
 }
 
-py::tuple navigate(const amp::world::Problem& problem, const std::string& method, std::uint64_t seed,
-                   const py::dict& params, double time_limit) {
+// A JSON document as Python objects (what `json.loads` makes of it).
+py::object from_json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+py::object points(const std::vector<Eigen::Vector2d>& ps) {
+  std::vector<std::vector<double>> rows;
+  for (const Eigen::Vector2d& q : ps) rows.push_back({q.x(), q.y()});
+  return states(rows);
+}
+
+// `amp navigate` from Python (study::run_both_methods, the same runs on the same seeds): its
+// record.json as a dict (the chosen method's Table 2 row, "table2", "run_details", "params"), plus
+// "phases" (policy search's plan stages on the first seed: Figure 3), "speeds" (both methods'
+// velocity profiles on the first seed: Figure 4) and "trace" (the chosen method's first driven trace).
+py::dict navigate_study(const amp::world::Problem& problem, const std::string& method, std::uint64_t seed,
+                        const py::dict& params, int runs) {
+  namespace study = amp::study;
+  if (method != study::kPolicyMethod && method != study::kDwaMethod) {
+    throw amp::ParameterError("runs: Table 2 compares policy-search and dwa; '" + method +
+                              "' runs once (leave runs at 0)");
+  }
+  study::NavigateSetup setup;
+  setup.runs = runs;
+  setup.seed = seed;
+  setup.params = params_of(params);
+  study::route_navigate_params(setup.params);
+  study::NavigateResult r;
+  {
+    py::gil_scoped_release free;
+    r = study::run_both_methods(problem, setup);
+  }
+  py::dict d = from_json(study::navigate_record(r, method, setup).dump());
+  py::list phases;
+  for (const amp::nav::PlanStage& s : r.policy.stages) {
+    py::dict stage;
+    stage["name"] = s.name;
+    stage["points"] = points(s.points);
+    stage["waypoints"] = s.waypoints;
+    stage["value"] = s.value ? py::object(py::float_(*s.value)) : py::object(py::none());
+    phases.append(stage);
+  }
+  d["phases"] = phases;
+  py::dict speeds;
+  speeds[study::kPolicyMethod] = r.policy.speeds;
+  speeds[study::kDwaMethod] = r.dwa.speeds;
+  d["speeds"] = speeds;
+  d["trace"] = points(method == study::kPolicyMethod ? r.policy.trace : r.dwa.trace);
+  return d;
+}
+
+py::object navigate(const amp::world::Problem& problem, const std::string& method, std::uint64_t seed,
+                    const py::dict& params, double time_limit, int runs) {
+  if (runs < 0) throw amp::ParameterError("runs: expected 0 (one run) or a positive count, got " + std::to_string(runs));
+  if (runs > 0) return navigate_study(problem, method, seed, params, runs);
   const amp::core::ParamMap p = params_of(params);
   amp::nav::NavigationOutcome run;
   {
     py::gil_scoped_release free;
-    run = amp::nav::execute_navigation(problem, method, p, seed, time_limit);
+    run = amp::study::run_navigation(problem, method, p, seed, time_limit);
   }
   std::vector<std::vector<double>> trace;
   for (const Eigen::Vector2d& q : run.trace) trace.push_back({q.x(), q.y()});
   return py::make_tuple(to_dict(run.record), states(trace));
+}
+
+// `amp explore` from Python (study::run_exploration): its record.json as a dict.
+py::object explore(const amp::world::Problem& problem, std::uint64_t seed, const py::dict& params) {
+  amp::study::ExploreSetup setup;
+  amp::study::read_explore_params(params_of(params), setup);
+  setup.seed = seed;
+  std::string record;
+  {
+    py::gil_scoped_release free;
+    record = amp::study::explore_record(amp::study::run_exploration(problem, setup)).dump();
+  }
+  return from_json(record);
+}
+
+// `amp sins` from Python (study::run_sins): its record.json as a dict; with all_systems, the
+// paper's three systems (and `system`) on the same worlds, as `amp sins -o` runs them.
+py::object sins(const std::string& system, std::uint64_t seed, const py::dict& params, const std::string& scale,
+                bool all_systems) {
+  amp::study::SinsSetup setup;
+  amp::study::read_sins_params(params_of(params), amp::nav::sins_scale(scale), setup);
+  // An unknown system: one line, before any world is drawn.
+  amp::nav::make_parameter_policy(system, setup.cases, setup.initial, setup.sins.stall_exploration, setup.plus);
+  setup.system = system;
+  setup.seed = seed;
+  std::string record;
+  {
+    py::gil_scoped_release free;
+    record = amp::study::sins_record(setup, amp::study::run_sins(setup, all_systems)).dump();
+  }
+  return from_json(record);
 }
 
 py::dict bench(const std::string& experiment, const std::string& out, int threads, bool force) {
@@ -155,8 +242,18 @@ PYBIND11_MODULE(amp, m) {
         py::arg("params") = py::dict(), py::arg("time_limit") = py::none(), py::arg("node_limit") = py::none(),
         "Runs a planner once: (record as a dict, path as an array of states; empty when unsolved)");
   m.def("navigate", &navigate, py::arg("problem"), py::arg("method"), py::arg("seed") = 1,
-        py::arg("params") = py::dict(), py::arg("time_limit") = 600.0,
-        "Runs a navigation method once (pgcs, policy-search, dwa, static, random, sins): (record, driven trace)");
+        py::arg("params") = py::dict(), py::arg("time_limit") = 600.0, py::arg("runs") = 0,
+        "Runs a navigation method once (pgcs, policy-search, dwa, static, random, sins, sins-plus): (record, driven "
+        "trace); with runs=N (policy-search or dwa), `amp navigate`: both methods on N seeds, its record.json as a dict "
+        "with Table 2 ('table2'), each run ('run_details'), policy search's phases ('phases'), the velocity profiles "
+        "('speeds') and the first driven trace ('trace')");
+  m.def("explore", &explore, py::arg("problem"), py::arg("seed") = 1, py::arg("params") = py::dict(),
+        "`amp explore`: PGCS exploration, then the queries; its record.json as a dict (params: steps, queries, "
+        "exploration, max_clusters, ...)");
+  m.def("sins", &sins, py::arg("system") = "adaptive", py::arg("seed") = 1, py::arg("params") = py::dict(),
+        py::arg("scale") = "calibrated", py::arg("all_systems") = false,
+        "`amp sins`: a system over a sequence of clutter worlds; its record.json as a dict (params: worlds, clutter, "
+        "max_cases, ...)");
   m.def("bench", &bench, py::arg("experiment"), py::arg("out"), py::arg("threads") = 0, py::arg("force") = false,
         "Runs an experiment file as `amp bench` does; returns the run count and summary.json as a dict");
   m.def("planners", [] { return amp::roadmap::builtin_planners().names(); }, "The planners' names");

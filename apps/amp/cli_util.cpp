@@ -12,20 +12,6 @@
 
 namespace amp::cli {
 
-void check_writable(const std::filesystem::path& file, bool force, const std::string& option) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) {
-    throw Error(option + ": '" + file.string() + "' is a directory, expected a file name");
-  }
-  if (std::filesystem::exists(file, ec) && !force) {
-    throw Error(option + ": '" + file.string() + "' already exists (use --force to overwrite it)");
-  }
-  const auto parent = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(parent, ec)) {
-    throw Error(option + ": directory '" + parent.string() + "' does not exist");
-  }
-}
-
 namespace {
 
 CLI::Validator positive(bool integer) {

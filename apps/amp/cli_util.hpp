@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "amp/core/parameters.hpp"
+#include "amp/study/output_dir.hpp"
 
 namespace amp::world {
 struct Problem;
@@ -18,9 +19,7 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitError = 1;
 inline constexpr int kExitNotSolved = 2;
 
-// Refuses to overwrite an existing file unless `force` (nothing the user wrote is lost unasked);
-// also refuses a directory or a path whose parent directory does not exist.
-void check_writable(const std::filesystem::path& file, bool force, const std::string& option);
+using study::check_writable;  // the one copy, shared with the studies (amp/study/output_dir.hpp)
 
 // Option checks with one-line messages ("--time-limit: expected a positive number, got '0'");
 // CLI11's PositiveNumber prints its range, up to a 300-digit DBL_MAX.

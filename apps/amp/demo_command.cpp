@@ -16,8 +16,8 @@
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
-#include "explore_run.hpp"
-#include "navigate_run.hpp"
+#include "amp/study/explore_study.hpp"
+#include "amp/study/navigate_study.hpp"
 #include "region_output.hpp"
 #include "commands.hpp"
 
@@ -68,7 +68,7 @@ void run_demo_bench(const std::filesystem::path& file, const std::filesystem::pa
 // `amp explore` reduced: the office explored by PGCS from its start, then a few queries.
 void run_demo_explore(const std::filesystem::path& file, const std::filesystem::path& out_dir, std::uint64_t seed) {
   const world::Problem office = world::load_problem(file);
-  ExploreSetup setup;
+  study::ExploreSetup setup;
   setup.run.steps = kDemoExploreSteps;
   setup.run.queries = kDemoExploreQueries;
   setup.run.exploration = kDemoExploration;
@@ -77,22 +77,22 @@ void run_demo_explore(const std::filesystem::path& file, const std::filesystem::
               kDemoExploreSteps, kDemoExploreQueries, static_cast<unsigned long long>(seed));
   std::printf("The robot explores, PGCS learns clusters and their Delaunay graph; each query then drives between two\n"
               "random places along graph routes, replanning when an edge proves blocked (solved: it arrived).\n");
-  const ExploreResult r = run_exploration(office, setup);
-  std::printf("%s", format_explore_table(r.record).c_str());
-  write_explore_outputs(office, r, out_dir);
+  const study::ExploreResult r = study::run_exploration(office, setup);
+  std::printf("%s", study::format_explore_table(r.record).c_str());
+  study::write_explore_outputs(office, r, out_dir);
   std::printf("pictures: %s/figure1.svg, curves.svg, queries.svg (and record.json)\n", out_dir.string().c_str());
 }
 
 // `amp navigate` reduced: policy search and DWA out of the paper's lab, a few noisy runs each.
 void run_demo_navigate(const std::filesystem::path& file, const std::filesystem::path& out_dir, std::uint64_t seed) {
   const world::Problem lab = world::load_problem(file);
-  NavigateSetup setup;
+  study::NavigateSetup setup;
   setup.runs = kDemoNavigateRuns;
   setup.seed = seed;
   std::printf("\nPolicy search against DWA out of the paper's lab (54 cm robot, 60 cm door):\n");
-  const NavigateResult r = run_both_methods(lab, setup);
-  std::printf("%s", format_table2(r, setup).c_str());
-  write_navigate_outputs(lab, r, kPolicyMethod, setup, out_dir);
+  const study::NavigateResult r = study::run_both_methods(lab, setup);
+  std::printf("%s", study::format_table2(r, setup).c_str());
+  study::write_navigate_outputs(lab, r, study::kPolicyMethod, setup, out_dir);
   std::printf("pictures: %s/phases.svg, velocity.svg (and record.json)\n", out_dir.string().c_str());
 }
 

@@ -17,7 +17,7 @@
 #include "cli_util.hpp"
 #include "problem_input.hpp"
 #include "commands.hpp"
-#include "explore_run.hpp"
+#include "amp/study/explore_study.hpp"
 
 namespace amp::cli {
 
@@ -66,41 +66,16 @@ std::function<void(long, long)> progress_bar() {
 
 // The settings: the defaults, then --param name=value (PGCS's and the run's parameters by their
 // schema names), then the named options.
-ExploreSetup read_setup(const ExploreOptions& o) {
-  core::ParamMap run_given, pgcs_given;
-  const auto& run_schema = nav::PgcsRunSettings::schema();
-  const auto& pgcs_schema = learn::PgcsSettings::schema();
-  auto declared = [](const auto& schema, const std::string& name) {
-    for (const core::ParamSpec& s : schema.specs()) {
-      if (s.name == name) return true;
-    }
-    return false;
-  };
-  for (const auto& [name, value] : parse_params(o.params)) {
-    if (declared(run_schema, name)) {
-      run_given.insert_or_assign(name, value);
-    } else if (declared(pgcs_schema, name)) {
-      pgcs_given.insert_or_assign(name, value);
-    } else {
-      std::string valid;
-      for (const auto* specs : {&pgcs_schema.specs(), &run_schema.specs()}) {
-        for (const core::ParamSpec& s : *specs) {
-          if (!valid.empty()) valid += ", ";
-          valid += s.name;
-        }
-      }
-      throw ParameterError("--param: unknown parameter '" + name + "' (valid: " + valid + ")");
-    }
-  }
+study::ExploreSetup read_setup(const ExploreOptions& o) {
+  const core::ParamMap given = parse_params(o.params);
   for (const auto& [name, option] : o.named) {
-    if (option->count() > 0 && (run_given.contains(name) || pgcs_given.contains(name))) {
+    if (option->count() > 0 && given.contains(name)) {
       throw ParameterError(option->get_name() + ": also given as --param " + name + "=...; give it once");
     }
   }
-  ExploreSetup setup;
+  study::ExploreSetup setup;
   try {
-    setup.run = run_schema.read(core::Params(run_schema.owner(), run_schema.specs(), run_given));
-    setup.pgcs = pgcs_schema.read(core::Params(pgcs_schema.owner(), pgcs_schema.specs(), pgcs_given));
+    study::read_explore_params(given, setup);
   } catch (const ParameterError& e) {
     throw ParameterError(std::string("--param: ") + e.what());
   }
@@ -124,21 +99,21 @@ int run_explore(const ExploreOptions& o) {
   if (o.query.size() % 4 != 0) {
     throw ParameterError("--query: expected four numbers SX SY GX GY, got " + std::to_string(o.query.size()));
   }
-  if (!o.output.empty()) check_explore_dir(o.output, o.force, "-o");
-  ExploreSetup setup = read_setup(o);
+  if (!o.output.empty()) study::check_explore_dir(o.output, o.force, "-o");
+  study::ExploreSetup setup = read_setup(o);
   const world::Problem problem = load_problem_input(o.problem, o.map, false, *o.cmd);
   setup.progress = progress_bar();
-  const ExploreResult result = run_exploration(problem, setup);
+  const study::ExploreResult result = study::run_exploration(problem, setup);
   if (o.json) {
     std::cout << result.record.dump(2) << '\n';
   } else {
-    std::cout << format_explore_table(result.record);
+    std::cout << study::format_explore_table(result.record);
   }
   if (!o.output.empty()) {
-    write_explore_outputs(problem, result, o.output);
+    study::write_explore_outputs(problem, result, o.output);
     if (!o.json) {
       std::cout << "written to " << o.output << "/:";
-      for (const std::string& f : explore_output_files()) std::cout << ' ' << f;
+      for (const std::string& f : study::explore_output_files()) std::cout << ' ' << f;
       std::cout << '\n';
     }
   }

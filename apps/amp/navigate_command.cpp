@@ -14,7 +14,7 @@
 #include "cli_util.hpp"
 #include "problem_input.hpp"
 #include "commands.hpp"
-#include "navigate_run.hpp"
+#include "amp/study/navigate_study.hpp"
 
 namespace amp::cli {
 
@@ -34,44 +34,33 @@ struct NavigateOptions {
 };
 
 int run_navigate(const NavigateOptions& o) {
-  const std::string method = o.method == "policy" ? kPolicyMethod : kDwaMethod;
-  NavigateSetup setup;
+  const std::string method = o.method == "policy" ? study::kPolicyMethod : study::kDwaMethod;
+  study::NavigateSetup setup;
   setup.runs = o.runs;
   setup.seed = o.seed;
   setup.params = parse_params(o.params);
-  if (!o.output.empty()) {
-    std::error_code ec;
-    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec)) {
-      throw Error("-o: '" + o.output + "' is a file, expected a directory");
-    }
-    if (std::filesystem::exists(o.output, ec)) {
-      for (const char* f : {"record.json", "phases.svg", "velocity.svg"}) {
-        check_writable(std::filesystem::path(o.output) / f, o.force, "-o");
-      }
-    }
-  }
+  if (!o.output.empty()) study::check_output_dir(o.output, study::navigate_output_files(), o.force, "-o");
   // A parameter neither method declares is an error, as in `amp bench`.
-  for (const auto& [name, value] : setup.params) {
-    bool known = false;
-    for (const char* m : {kPolicyMethod, kDwaMethod}) {
-      for (const core::ParamSpec& spec : nav::builtin_navigators().info(m).params) known = known || spec.name == name;
-    }
-    if (!known) throw ParameterError("--param: unknown parameter '" + name + "' (`amp bench --list` shows them)");
+  try {
+    study::route_navigate_params(setup.params);
+  } catch (const ParameterError& e) {
+    throw ParameterError(std::string("--param: ") + e.what());
   }
+
   const world::Problem problem = load_problem_input(o.problem, o.map, true, *o.cmd);
   // The other method runs beside the chosen one on the same seeds: Table 2 and Figure 4 compare both.
-  const NavigateResult r = run_both_methods(problem, setup);
-  const MethodRuns& chosen = method == kPolicyMethod ? r.policy : r.dwa;
+  const study::NavigateResult r = study::run_both_methods(problem, setup);
+  const study::MethodRuns& chosen = method == study::kPolicyMethod ? r.policy : r.dwa;
   if (o.json) {
     std::cout << chosen.record.dump(2) << '\n';
   } else {
     for (const auto& [key, value] : chosen.record.items()) {
       std::cout << "  " << key << std::string(26 - std::min<std::size_t>(25, key.size()), ' ') << value.dump() << '\n';
     }
-    std::cout << '\n' << format_table2(r, setup);
+    std::cout << '\n' << study::format_table2(r, setup);
   }
   if (o.output.empty()) return kExitOk;
-  write_navigate_outputs(problem, r, method, setup, o.output);
+  study::write_navigate_outputs(problem, r, method, setup, o.output);
   if (!o.json) std::cout << "written to " << o.output << "/: record.json, phases.svg, velocity.svg\n";
   return kExitOk;
 }

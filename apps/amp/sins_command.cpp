@@ -18,7 +18,7 @@
 #include "amp/core/parameters.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "sins_run.hpp"
+#include "amp/study/sins_study.hpp"
 
 namespace amp::cli {
 
@@ -83,69 +83,27 @@ CLI::Validator open_unit_interval() {
       "(0, 1)");
 }
 
-template <class Schema>
-bool declared(const Schema& schema, const std::string& name) {
-  for (const core::ParamSpec& s : schema.specs()) {
-    if (s.name == name) return true;
-  }
-  return false;
-}
-
 // The settings: the defaults, then --param name=value (by the names of SinsSettings::schema(),
 // SchemaParameters::schema() and CaseSettings::schema()), then the named options.
-SinsSetup read_setup(const SinsOptions& o) {
-  const auto& sins_schema = nav::SinsSettings::schema();
-  const auto& motor_schema = nav::SchemaParameters::schema();
-  const auto& case_schema = learn::CaseSettings::schema();
-  const auto& plus_schema = learn::SplittingCaseSettings::schema();
-  core::ParamMap sins_given, motor_given, case_given, plus_given;
-  for (const auto& [name, value] : parse_params(o.params)) {
-    const bool plus = declared(plus_schema, name);  // max_cases is both the cases' and sins-plus's
-    if (plus) plus_given.insert_or_assign(name, value);
-    if (declared(sins_schema, name)) {
-      sins_given.insert_or_assign(name, value);
-    } else if (declared(motor_schema, name)) {
-      motor_given.insert_or_assign(name, value);
-    } else if (declared(case_schema, name)) {
-      case_given.insert_or_assign(name, value);
-    } else if (!plus) {
-      std::vector<std::string> names;
-      for (const auto* specs : {&sins_schema.specs(), &motor_schema.specs(), &case_schema.specs(), &plus_schema.specs()}) {
-        for (const core::ParamSpec& s : *specs) {
-          if (std::find(names.begin(), names.end(), s.name) == names.end()) names.push_back(s.name);
-        }
-      }
-      std::string valid;
-      for (const std::string& n : names) valid += (valid.empty() ? "" : ", ") + n;
-      throw ParameterError("--param: unknown parameter '" + name + "' (valid: " + valid + ")");
-    }
-  }
+study::SinsSetup read_setup(const SinsOptions& o) {
+  const core::ParamMap given = parse_params(o.params);
   for (const auto& [name, option] : o.named) {
-    if (option->count() > 0 && (sins_given.contains(name) || case_given.contains(name))) {
+    if (option->count() > 0 && given.contains(name)) {
       throw ParameterError(option->get_name() + ": also given as --param " + name + "=...; give it once");
     }
   }
-  // The scale's step limit and radii, unless given; its box after reading (the box is no parameter).
-  nav::SinsSettings scaled;
+  const nav::SinsScale* scale = nullptr;
   try {
-    scaled.set_scale(nav::sins_scale(o.scale));
+    scale = &nav::sins_scale(o.scale);
   } catch (const ParameterError& e) {
     throw ParameterError(std::string("--scale: ") + e.what());
   }
-  sins_given.try_emplace("step_limit", static_cast<double>(scaled.step_limit));
-  sins_given.try_emplace("min_radius", scaled.world.min_radius);
-  sins_given.try_emplace("max_radius", scaled.world.max_radius);
-  SinsSetup setup;
+  study::SinsSetup setup;
   try {
-    setup.sins = sins_schema.read(core::Params(sins_schema.owner(), sins_schema.specs(), sins_given));
-    setup.initial = motor_schema.read(core::Params(motor_schema.owner(), motor_schema.specs(), motor_given));
-    setup.cases = case_schema.read(core::Params(case_schema.owner(), case_schema.specs(), case_given));
-    setup.plus = plus_schema.read(core::Params(plus_schema.owner(), plus_schema.specs(), plus_given));
+    study::read_sins_params(given, *scale, setup);
   } catch (const ParameterError& e) {
     throw ParameterError(std::string("--param: ") + e.what());
   }
-  setup.sins.world.width = scaled.world.width;
-  setup.sins.world.height = scaled.world.height;
   for (const auto& [name, option] : o.named) {
     if (option->count() == 0) continue;
     if (name == "worlds") setup.sins.worlds = o.worlds;
@@ -223,22 +181,22 @@ int run_calibration(const SinsOptions& o, const CLI::Option* seed_option) {
 }
 
 int run_sins_command(const SinsOptions& o) {
-  if (!o.output.empty()) check_sins_dir(o.output, o.force, "-o");
-  SinsSetup setup = read_setup(o);
+  if (!o.output.empty()) study::check_sins_dir(o.output, o.force, "-o");
+  study::SinsSetup setup = read_setup(o);
   setup.progress = progress_bar();
   // Figure 5 compares the three systems on the same worlds: with -o the other two run as well.
-  const SinsResult result = run_sins(setup, !o.output.empty());
+  const study::SinsResult result = study::run_sins(setup, !o.output.empty());
   if (o.json) {
     std::cout << result.record.dump(2) << '\n';
   } else {
-    std::cout << format_sins_table(result.record);
-    if (result.runs.size() > 1) std::cout << '\n' << format_sins_comparison(result);
+    std::cout << study::format_sins_table(result.record);
+    if (result.runs.size() > 1) std::cout << '\n' << study::format_sins_comparison(result);
   }
   if (!o.output.empty()) {
-    write_sins_outputs(setup, result, o.output);
+    study::write_sins_outputs(setup, result, o.output);
     if (!o.json) {
       std::cout << "written to " << o.output << "/:";
-      for (const std::string& f : sins_output_files()) std::cout << ' ' << f;
+      for (const std::string& f : study::sins_output_files()) std::cout << ' ' << f;
       std::cout << '\n';
     }
   }

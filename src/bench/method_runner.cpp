@@ -3,6 +3,7 @@
 #include "amp/core/error.hpp"
 #include "amp/nav/navigator_catalog.hpp"
 #include "amp/roadmap/run.hpp"
+#include "amp/study/navigation_run.hpp"
 
 namespace amp::bench {
 
@@ -38,8 +39,7 @@ MethodRun run_method(const world::Problem& problem, MethodKind kind, const std::
       break;
     }
     case MethodKind::kNavigator: {
-      nav::NavigationOutcome run =
-          nav::execute_navigation(problem, method, params, seed, time_limit_s, nav::builtin_navigators(), cancel);
+      nav::NavigationOutcome run = study::run_navigation(problem, method, params, seed, time_limit_s, cancel);
       out.record = std::move(run.record);
       out.path.reserve(run.trace.size());
       for (const Eigen::Vector2d& p : run.trace) out.path.push_back(State(p));

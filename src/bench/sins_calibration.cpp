@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/learn/case_library.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
@@ -21,12 +22,6 @@ namespace {
 std::string percent(double share) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f%%", 100.0 * share);
-  return text;
-}
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
   return text;
 }
 
@@ -102,7 +97,7 @@ ScaleProbe probe(const SinsCalibrationSettings& c, double factor, int first, int
   const std::vector<nav::SequenceOutcome> random = drive("random", wide, seqs);
   const std::optional<int> limit = limit_for_share(random, c.random_target);
   if (!limit) {
-    throw ParameterError("at scale " + number(factor) + " the random system solves " + percent(pooled_share(random)) +
+    throw ParameterError("at scale " + core::number_text(factor) + " the random system solves " + percent(pooled_share(random)) +
                          " within " + std::to_string(c.probe_step_limit) + " steps, less than its target " +
                          percent(c.random_target));
   }
@@ -140,13 +135,13 @@ std::string interval(const SolvedShare& s) {
 void SinsCalibrationSettings::validate() const {
   base.validate();
   const auto fail = [](const std::string& what) { throw ParameterError("sins calibration: " + what); };
-  if (!(static_target > 0.0 && static_target < 1.0)) fail("static target " + number(static_target) + " is outside (0, 1)");
-  if (!(random_target > 0.0 && random_target < 1.0)) fail("random target " + number(random_target) + " is outside (0, 1)");
+  if (!(static_target > 0.0 && static_target < 1.0)) fail("static target " + core::number_text(static_target) + " is outside (0, 1)");
+  if (!(random_target > 0.0 && random_target < 1.0)) fail("random target " + core::number_text(random_target) + " is outside (0, 1)");
   if (search_sequences < 1 || limit_sequences < 1 || sequences < 1 || bisections < 0 || probe_step_limit < 1) {
     fail("sequences, search sequences and the probe step limit must be >= 1, bisections >= 0");
   }
   if (!(factor_low > 0.0 && factor_low < factor_high && std::isfinite(factor_high))) {
-    fail("the scale bracket [" + number(factor_low) + ", " + number(factor_high) + "] must have 0 < low < high");
+    fail("the scale bracket [" + core::number_text(factor_low) + ", " + core::number_text(factor_high) + "] must have 0 < low < high");
   }
   if (!(factor_step > 0.0)) fail("the factor step must be > 0");
 }
@@ -164,8 +159,8 @@ SinsCalibration calibrate_sins_scale(const SinsCalibrationSettings& c,
     ScaleProbe low = measure(c.factor_low);
     ScaleProbe high = measure(c.factor_high);
     if (!(low.static_solved < c.static_target && c.static_target < high.static_solved)) {
-      out.why = "the static system solves " + percent(low.static_solved) + " at scale " + number(low.factor) + " and " +
-                percent(high.static_solved) + " at " + number(high.factor) + ": its target " +
+      out.why = "the static system solves " + percent(low.static_solved) + " at scale " + core::number_text(low.factor) + " and " +
+                percent(high.static_solved) + " at " + core::number_text(high.factor) + ": its target " +
                 percent(c.static_target) + " is not between";
       return out;
     }
@@ -189,7 +184,7 @@ SinsCalibration calibrate_sins_scale(const SinsCalibrationSettings& c,
   out.random_share = share_of(drive("random", s, check));
   out.reached = out.static_share.holds(c.static_target) && out.random_share.holds(c.random_target);
   if (!out.reached) {
-    out.why = "at scale " + number(out.scale.factor) + " and " + std::to_string(out.scale.step_limit) +
+    out.why = "at scale " + core::number_text(out.scale.factor) + " and " + std::to_string(out.scale.step_limit) +
               " steps the static system solves " + interval(out.static_share) + " and the random system " +
               interval(out.random_share) + ": the targets " + percent(c.static_target) + " and " +
               percent(c.random_target) + " are not both inside";

@@ -116,6 +116,15 @@ void JointSpace::embed(const State& s, double* out) const {
   }
 }
 
+std::optional<CoordinateLayout> JointSpace::coordinate_layout() const {
+  CoordinateLayout layout;
+  for (const Joint& j : joints_) {
+    const CoordinateKind kind = j.kind == JointKind::kContinuous ? CoordinateKind::kAngle : CoordinateKind::kLinear;
+    layout.axes.push_back({kind, j.lo, j.hi, j.weight});
+  }
+  return layout;
+}
+
 JointSpace make_rn_space(const std::vector<double>& lo, const std::vector<double>& hi) {
   if (lo.size() != hi.size()) throw ParameterError("bounds: min and max have different dimensions");
   std::vector<Joint> joints;

@@ -5,18 +5,13 @@
 #include <sstream>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 
 namespace amp::core {
 
 namespace {
 
 // The shortest text that reads back as v (0.3, not 0.29999999999999999).
-std::string format_number(double v) {
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
-}
-
 // A whole string parsed as a number, or false.
 bool parse_number(const std::string& s, double& out) {
   const char* first = s.data();
@@ -79,8 +74,8 @@ ParamValue check_value(const std::string& owner, const ParamSpec& spec, const Pa
         throw ParameterError(where + ": expected an integer, got " + v.to_string());
       }
       if (x < spec.min || x > spec.max) {
-        throw ParameterError(where + ": " + format_number(x) + " is outside [" + format_number(spec.min) + ", " +
-                             format_number(spec.max) + "]");
+        throw ParameterError(where + ": " + core::number_text(x) + " is outside [" + core::number_text(spec.min) + ", " +
+                             core::number_text(spec.max) + "]");
       }
       return x;
     }
@@ -90,7 +85,7 @@ ParamValue check_value(const std::string& owner, const ParamSpec& spec, const Pa
 
 }  // namespace
 
-std::string ParamValue::to_string() const { return is_number() ? format_number(number()) : string(); }
+std::string ParamValue::to_string() const { return is_number() ? core::number_text(number()) : string(); }
 
 std::string_view to_string(ParamType t) {
   switch (t) {

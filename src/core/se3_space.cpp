@@ -35,6 +35,14 @@ Se3Space::Se3Space(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double 
   set_resolution(resolution_fraction * maximum_extent());
 }
 
+std::optional<CoordinateLayout> Se3Space::coordinate_layout() const {
+  CoordinateLayout layout;
+  for (int i = 0; i < 3; ++i) layout.axes.push_back({CoordinateKind::kLinear, lo_[i], hi_[i], translation_weight_});
+  layout.quaternion = true;
+  layout.rotation_weight = rotation_weight_;
+  return layout;
+}
+
 State Se3Space::make_state(const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
   const Eigen::Quaterniond n = q.normalized();
   State s(7);

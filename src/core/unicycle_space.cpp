@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 
 namespace amp::core {
 
@@ -17,28 +18,22 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Slack when comparing against bounds so that interpolated endpoints count as inside.
 constexpr double kBoundsSlack = 1e-9;
 
-std::string format_number(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
 void check_interval(const char* lo_name, double lo, const char* hi_name, double hi) {
   for (const auto& [name, value] : {std::pair{lo_name, lo}, std::pair{hi_name, hi}}) {
     if (!std::isfinite(value)) {
-      throw ParameterError(std::string("unicycle bounds: ") + name + " must be finite, got " + format_number(value));
+      throw ParameterError(std::string("unicycle bounds: ") + name + " must be finite, got " + core::number_text(value));
     }
   }
   if (!(lo < hi)) {
-    throw ParameterError(std::string("unicycle bounds: ") + lo_name + " (" + format_number(lo) + ") must be below " +
-                         hi_name + " (" + format_number(hi) + ")");
+    throw ParameterError(std::string("unicycle bounds: ") + lo_name + " (" + core::number_text(lo) + ") must be below " +
+                         hi_name + " (" + core::number_text(hi) + ")");
   }
 }
 
 void check_weight(const char* name, double w) {
   if (!(w > 0.0) || !std::isfinite(w)) {
     throw ParameterError(std::string("unicycle weights: ") + name + " must be positive and finite, got " +
-                         format_number(w));
+                         core::number_text(w));
   }
 }
 
@@ -61,7 +56,7 @@ UnicycleSpace::UnicycleSpace(const UnicycleBounds& bounds, const UnicycleWeights
   check_weight("v", weights_.v);
   check_weight("omega", weights_.omega);
   if (!(resolution_fraction > 0.0) || resolution_fraction > 1.0) {
-    throw ParameterError("resolution fraction must be in (0, 1], got " + format_number(resolution_fraction));
+    throw ParameterError("resolution fraction must be in (0, 1], got " + core::number_text(resolution_fraction));
   }
   // Attained by opposite corners of the box with antipodal headings.
   const double dx = bounds_.x_max - bounds_.x_min;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 #include "amp/core/rng.hpp"
 
 namespace amp::learn {
@@ -16,12 +17,6 @@ namespace {
 constexpr double kGenericValue = 0.5;  // every value of the initial case: the middle of [0, 1]
 // Floor of Ebar and E in the relative similarity: keeps Ebar / E finite for an exact match.
 constexpr double kErrorFloor = 1e-12;
-
-std::string number(double v) {
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::string("?");
-}
 
 bool in_unit(double v) { return v >= 0.0 && v <= 1.0; }  // false for NaN
 
@@ -70,16 +65,16 @@ CaseHistory::CaseHistory(int length) {
 }
 
 void CaseHistory::push(const CaseInputs& inputs, const CaseOutputs& outputs, double reward) {
-  if (!in_unit(reward)) throw ParameterError("case_history: reward is " + number(reward) + ", outside [0, 1]");
+  if (!in_unit(reward)) throw ParameterError("case_history: reward is " + core::number_text(reward) + ", outside [0, 1]");
   for (int x = 0; x < kCaseInputs; ++x) {
     if (!in_unit(inputs[x])) {
-      throw ParameterError("case_history: input " + std::to_string(x) + " is " + number(inputs[x]) +
+      throw ParameterError("case_history: input " + std::to_string(x) + " is " + core::number_text(inputs[x]) +
                            ", outside [0, 1]");
     }
   }
   for (int x = 0; x < kCaseOutputs; ++x) {
     if (!in_unit(outputs[x])) {
-      throw ParameterError("case_history: output " + std::to_string(x) + " is " + number(outputs[x]) +
+      throw ParameterError("case_history: output " + std::to_string(x) + " is " + core::number_text(outputs[x]) +
                            ", outside [0, 1]");
     }
   }
@@ -129,7 +124,7 @@ CaseLibrary::CaseLibrary(CaseSettings settings, std::vector<Case> cases)
                            std::all_of(c.outputs.begin(), c.outputs.end(), all_in_unit<CaseOutputs>);
     if (!values_ok) throw ParameterError(where + " has a value outside [0, 1]");
     if (c.uses < 0 || !in_unit(c.mean_error)) {
-      throw ParameterError(where + ": uses " + std::to_string(c.uses) + " and mean error " + number(c.mean_error) +
+      throw ParameterError(where + ": uses " + std::to_string(c.uses) + " and mean error " + core::number_text(c.mean_error) +
                            " must be >= 0 and in [0, 1]");
     }
   }
@@ -149,7 +144,7 @@ void CaseLibrary::check_match(const CaseMatch& m, const CaseHistory& env) const 
       m.overlap != std::min(env.size(), m.position) || !in_unit(m.error)) {
     throw ParameterError("case_library: match (case " + std::to_string(m.case_index) + ", position " +
                          std::to_string(m.position) + ", overlap " + std::to_string(m.overlap) + ", error " +
-                         number(m.error) + ") does not fit this library and history");
+                         core::number_text(m.error) + ") does not fit this library and history");
   }
 }
 

@@ -40,7 +40,7 @@ UnicycleDiscSettings DriveSettings::robot(double radius) const {
 Footprint DriveSettings::footprint(double radius) const { return UnicycleDisc(robot(radius)).footprint(); }
 
 const GridNavWorld& map_world(const NavTask& task, const char* method) {
-  const auto* grid = dynamic_cast<const GridNavWorld*>(task.timeline->base().get());
+  const GridNavWorld* grid = task.timeline->base()->as_map();
   if (grid == nullptr) {
     throw ParameterError(std::string(method) + " plans on map worlds (map_server or MovingAI); problem '" + task.name +
                          "' is not one");

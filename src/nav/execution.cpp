@@ -6,6 +6,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
+#include "amp/core/run_record.hpp"
 #include "amp/core/stop_condition.hpp"
 #include "amp/nav/motion_controller.hpp"
 #include "amp/nav/simulator.hpp"
@@ -45,6 +46,16 @@ Execution execute(Simulator& sim, MotionController& controller, const MotionNois
   out.time_s = sim.time() - t0;
   out.collisions = sim.blocked_moves() - blocked0;
   return out;
+}
+
+void record_execution(const Execution& e, bool stopped, core::RunRecord& r) {
+  r.status = e.arrived ? core::PlanStatus::kSolved : stopped ? core::PlanStatus::kTimeout : core::PlanStatus::kUnsolvable;
+  r.path_length = e.distance;
+  r.extra["arrived"] = e.arrived ? 1.0 : 0.0;
+  r.extra["execution_time_s"] = e.time_s;
+  r.extra["distance"] = e.distance;
+  r.extra["min_clearance"] = e.min_clearance;
+  r.extra["collisions"] = static_cast<double>(e.collisions);
 }
 
 }  // namespace amp::nav

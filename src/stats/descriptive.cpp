@@ -22,6 +22,13 @@ double quantile(std::span<const double> sorted, double prob) {
   return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[lo + 1] - sorted[lo]);
 }
 
+std::optional<double> median(std::span<const double> sample) {
+  if (sample.empty()) return std::nullopt;
+  std::vector<double> sorted(sample.begin(), sample.end());
+  std::sort(sorted.begin(), sorted.end());
+  return quantile(sorted, 0.5);
+}
+
 Summary describe(std::span<const double> x) {
   Summary s;
   s.n = x.size();

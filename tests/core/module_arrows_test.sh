@@ -5,8 +5,8 @@ set -euo pipefail
 root=${1:?usage: module_arrows_test.sh SOURCE_DIR}
 declare -A allowed=(
   [core]="core" [stats]="core stats" [world]="core world" [learn]="core learn"
-  [roadmap]="core world learn roadmap" [nav]="core world learn nav" [viz]="core world roadmap stats viz"
-  [bench]="core world learn nav roadmap stats viz bench")
+  [roadmap]="core world learn roadmap" [nav]="core stats world learn nav" [viz]="core world roadmap stats viz"
+  [study]="core world learn nav stats viz study" [bench]="core world learn nav roadmap stats viz study bench")
 bad=0
 for module in "${!allowed[@]}"; do
   for dir in "$root/src/$module" "$root/include/amp/$module"; do

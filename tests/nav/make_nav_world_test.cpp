@@ -17,6 +17,8 @@ TEST(MakeNavWorld, MapProblemGivesAGridWorldSharingTheMap) {
   const auto* grid = dynamic_cast<const GridNavWorld*>(w.get());
   ASSERT_NE(grid, nullptr);
   EXPECT_EQ(&grid->grid(), p.environment->obstacle_outline().grid);  // shared, not copied
+  EXPECT_EQ(w->as_map(), grid);  // the typed view methods take a map from
+  EXPECT_EQ(w->as_polygons(), nullptr);
   const Eigen::Vector2d start(p.start()[0], p.start()[1]);
   EXPECT_TRUE(w->disc_free(start, p.environment->robot_radius()));
   EXPECT_GT(w->ray_cast(start, {1, 0}, 100.0), 0.0);
@@ -25,7 +27,10 @@ TEST(MakeNavWorld, MapProblemGivesAGridWorldSharingTheMap) {
 TEST(MakeNavWorld, PlanarProblemGivesAPolygonWorld) {
   const world::Problem p = world::load_problem(kProblems / "walls.yaml");
   const auto w = make_nav_world(p);
-  ASSERT_NE(dynamic_cast<const PolygonNavWorld*>(w.get()), nullptr);
+  const auto* polygons = dynamic_cast<const PolygonNavWorld*>(w.get());
+  ASSERT_NE(polygons, nullptr);
+  EXPECT_EQ(w->as_polygons(), polygons);
+  EXPECT_EQ(w->as_map(), nullptr);
   const Eigen::AlignedBox3d b = p.environment->workspace_bounds();
   EXPECT_DOUBLE_EQ(w->bounds().min().x(), b.min().x());
   EXPECT_DOUBLE_EQ(w->bounds().max().y(), b.max().y());

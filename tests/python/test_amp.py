@@ -109,3 +109,67 @@ def test_load_problem_chooses_an_arms_collision_model(tmp_path, monkeypatch):
         amp.load_problem(box, collision="cubes")
     with pytest.raises(amp.Error, match="walls.yaml.*arm problem"):
         amp.load_problem(str(PROBLEMS / "walls.yaml"), collision="spheres")
+
+
+# The keys of `amp navigate`'s record.json that are wall-clock times (all else is seeded).
+NAVIGATE_TIMINGS = {"planning_time_median_s", "planning_time_s"}
+
+
+def without_timings(value):
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items() if k not in NAVIGATE_TIMINGS}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+def test_navigate_with_runs_gives_what_amp_navigate_writes(tmp_path):
+    import subprocess
+    lab = PROBLEMS / "policy-lab.yaml"
+    study = amp.navigate(amp.load_problem(str(lab)), "policy-search", seed=3, runs=2)
+    out = tmp_path / "nav"
+    subprocess.run([os.environ["AMP_CLI"], "navigate", str(lab), "--runs", "2", "--seed", "3", "-o", str(out)],
+                   check=True, capture_output=True)
+    written = json.loads((out / "record.json").read_text())
+    # Table 2: both methods' rows, on the same seeds as the command's, the same figures.
+    assert [row["method"] for row in study["table2"]] == ["policy-search", "dwa"]
+    assert without_timings({k: study[k] for k in written}) == without_timings(written)
+    assert study["table2"][0]["runs"] == 2 and study["table2"][0]["solved_runs"] <= 2
+    # The phases of policy search (the paper's Table 1 and Figure 3), each a polyline in the map.
+    names = [p["name"] for p in study["phases"]]
+    assert len(names) == 4 and names[0].startswith("(a)") and names[-1].startswith("(d)")
+    for phase in study["phases"]:
+        assert len(phase["points"]) >= 2 and all(len(p) == 2 for p in phase["points"])
+    assert set(study["speeds"]) == {"policy-search", "dwa"} and len(study["speeds"]["dwa"]) > 0
+    assert len(study["trace"]) > 1
+
+
+def test_navigate_with_runs_refuses_other_methods_and_unknown_params():
+    lab = amp.load_problem(str(PROBLEMS / "policy-lab.yaml"))
+    with pytest.raises(amp.Error, match="Table 2 compares"):
+        amp.navigate(lab, "pgcs", runs=2)
+    with pytest.raises(amp.Error, match="unknown parameter 'nope'"):
+        amp.navigate(lab, "dwa", runs=1, params={"nope": 1})
+
+
+def test_explore_and_sins_give_their_commands_records(tmp_path):
+    import subprocess
+    office = PROBLEMS / "office-map.yaml"
+    record = amp.explore(amp.load_problem(str(office)), seed=2, params={"steps": 3000, "queries": 2})
+    cli = subprocess.run([os.environ["AMP_CLI"], "explore", str(office), "--steps", "3000", "--queries", "2",
+                          "--seed", "2", "--json"], check=True, capture_output=True, text=True)
+    flat = json.loads(cli.stdout)
+    timings = {"explore_time_s", "query_time_median_s"}
+    assert {k: v for k, v in flat.items() if k not in timings} == \
+        {k: record[k] for k in flat if k not in timings}
+    assert record["settings"]["steps"] == 3000 and len(record["query_details"]) == 2
+
+    sins = amp.sins("adaptive", seed=4, params={"worlds": 3})
+    cli = subprocess.run([os.environ["AMP_CLI"], "sins", "--worlds", "3", "--seed", "4", "--json"],
+                         check=True, capture_output=True, text=True)
+    flat = json.loads(cli.stdout)
+    assert {k: v for k, v in flat.items() if k != "time_per_world_ms_mean"} == \
+        {k: sins[k] for k in flat if k != "time_per_world_ms_mean"}
+    assert len(sins["world_outcomes"]) == 3
+    with pytest.raises(amp.Error, match="unknown parameter 'nope'"):
+        amp.sins(params={"nope": 1})

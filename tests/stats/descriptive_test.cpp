@@ -98,5 +98,13 @@ TEST(Describe, EdgeCases) {
   EXPECT_THROW(describe(std::vector<double>{1.0, std::nan("")}), ParameterError);
 }
 
+TEST(Median, MatchesRsMedianAndHasNoneForAnEmptySample) {
+  // R: median(c(3, 1, 2)) = 2; median(c(4, 1, 3, 2)) = 2.5; median(c(0.1, 0.7, 0.2, 0.4)) = 0.3.
+  EXPECT_DOUBLE_EQ(*median(std::vector<double>{3, 1, 2}), 2.0);
+  EXPECT_DOUBLE_EQ(*median(std::vector<double>{4, 1, 3, 2}), 2.5);
+  EXPECT_DOUBLE_EQ(*median(std::vector<double>{0.1, 0.7, 0.2, 0.4}), 0.3);
+  EXPECT_FALSE(median(std::vector<double>{}).has_value());
+}
+
 }  // namespace
 }  // namespace amp::stats

@@ -38,6 +38,8 @@ class JointSpace final : public Space {
   double maximum_extent() const override { return extent_; }
   int embedding_dimension() const override { return embedding_dim_; }
   void embed(const State& s, double* out) const override;
+  // One axis per joint: continuous joints are angles; linear and revolute ones are lines.
+  std::optional<CoordinateLayout> coordinate_layout() const override;
 
   const std::vector<Joint>& joints() const { return joints_; }
 

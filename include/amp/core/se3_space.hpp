@@ -27,6 +27,8 @@ class Se3Space final : public Space {
   void embed(const State& s, double* out) const override { embed_variant(s, 0, out); }
   int embedding_variants() const override { return 2; }
   void embed_variant(const State& s, int variant, double* out) const override;
+  // The position's three lines (weight translation_weight), then the quaternion.
+  std::optional<CoordinateLayout> coordinate_layout() const override;
 
   const Eigen::Vector3d& lo() const { return lo_; }
   double translation_weight() const { return translation_weight_; }

@@ -1,6 +1,8 @@
 #pragma once
+#include <optional>
 #include <string_view>
 
+#include "amp/core/coordinate_layout.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/core/state.hpp"
 
@@ -42,6 +44,11 @@ class Space {
   // Further embeddings of the same state (SE3 embeds q and -q, the same rotation).
   virtual int embedding_variants() const { return 1; }
   virtual void embed_variant(const State& s, int /*variant*/, double* out) const { embed(s, out); }
+
+  // The state's coordinates by kind, for code that works on them one at a time (KD-tree bounds,
+  // grid charts): it asks for the layout it needs instead of the space's type. None for a space
+  // that offers no such code its coordinates (UnicycleSpace: velocities beside the pose).
+  virtual std::optional<CoordinateLayout> coordinate_layout() const { return std::nullopt; }
 
   // Longest distance between two consecutive states checked along an edge.
   double resolution() const { return resolution_; }

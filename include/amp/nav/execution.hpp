@@ -7,6 +7,7 @@
 namespace amp::core {
 class Rng;
 class StopCondition;
+struct RunRecord;
 }  // namespace amp::core
 
 namespace amp::nav {
@@ -39,5 +40,10 @@ struct Execution {
 // through an obstacle (a refused move counts as a collision).
 Execution execute(Simulator& sim, MotionController& controller, const MotionNoise& noise, double time_limit_s,
                   core::Rng& rng, const core::StopCondition* stop = nullptr);
+
+// The flat execution metrics of a run (arrived, execution_time_s, distance, min_clearance,
+// collisions) into a record: status, path_length and extra. `stopped`: the run's stop fired, so a
+// robot that did not arrive timed out rather than failed. Shared by policy-search and dwa.
+void record_execution(const Execution& e, bool stopped, core::RunRecord& r);
 
 }  // namespace amp::nav

@@ -29,6 +29,7 @@ class GridNavWorld final : public NavWorld {
   double ray_cast(const Eigen::Vector2d& p, const Eigen::Vector2d& dir, double max_range) const override;
   // Sets cells (and the cells under shapes) occupied or free on a copy of the map.
   std::shared_ptr<const NavWorld> changed(const ObstacleChange& change) const override;
+  const GridNavWorld* as_map() const override { return this; }
 
  private:
   // A cell outside the map counts as blocked.

@@ -10,6 +10,8 @@
 namespace amp::nav {
 
 struct ObstacleChange;
+class GridNavWorld;
+class PolygonNavWorld;
 
 // The nearest obstacle point to a query point.
 struct NearestObstacle {
@@ -42,6 +44,11 @@ class NavWorld {
   // This world with `change` applied. Throws ParameterError when it cannot apply (a vanishing
   // shape that is not there, cells on a polygon world, cells outside the map).
   virtual std::shared_ptr<const NavWorld> changed(const ObstacleChange& change) const = 0;
+
+  // This world as a map, or as polygons; null when it is the other kind. A method that needs one
+  // kind (policy-search and dwa plan on maps, sins measures a polygon box) takes it typed from here.
+  virtual const GridNavWorld* as_map() const { return nullptr; }
+  virtual const PolygonNavWorld* as_polygons() const { return nullptr; }
 
   // Clearance of a disc of radius r at p: distance to the nearest obstacle minus r (< 0: overlap).
   double clearance(const Eigen::Vector2d& p, double r) const { return nearest_obstacle(p).distance - r; }

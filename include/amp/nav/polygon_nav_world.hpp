@@ -28,6 +28,7 @@ class PolygonNavWorld final : public NavWorld {
   double ray_cast(const Eigen::Vector2d& p, const Eigen::Vector2d& dir, double max_range) const override;
   // Appear adds the shapes; vanish removes equal ones. Cells are refused (no map here).
   std::shared_ptr<const NavWorld> changed(const ObstacleChange& change) const override;
+  const PolygonNavWorld* as_polygons() const override { return this; }
 
  private:
   // p lies in a closed obstacle polygon or circle.

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <span>
 
 namespace amp::stats {
@@ -32,5 +33,9 @@ Summary describe(std::span<const double> x);
 // R's default: linear interpolation between order statistics at h = (n - 1) prob.
 // Throws ParameterError for an empty sample or prob outside [0, 1].
 double quantile(std::span<const double> sorted, double prob);
+
+// The type-7 median of an unsorted sample (quantile at 0.5); none for an empty sample, which has no
+// median (a record writes it as null, a table of numbers leaves it out).
+std::optional<double> median(std::span<const double> sample);
 
 }  // namespace amp::stats

@@ -6,11 +6,18 @@
 
 namespace amp::world {
 
+class GridEnvironment;
+
 // A world with a robot in it, in its roles: it makes validity checkers (runs), draws itself (viz),
 // tells planners its extent and the robot's size (features) and hands its 2-D obstacles to
 // navigation. Code that needs one role takes that role's interface. Immutable once built, so one
 // environment serves every thread. Implementations: PlanarEnvironment (2-D shapes),
 // SpatialEnvironment (FCL), GridEnvironment (maps).
-class Environment : public CheckerFactory, public WorldDrawing, public PlanningFeatures, public ObstacleSource {};
+class Environment : public CheckerFactory, public WorldDrawing, public PlanningFeatures, public ObstacleSource {
+ public:
+  // This world as a map, or null when it is none: a method that plans on maps only (grid-dp) takes
+  // it typed from here and says in one line what it needs otherwise.
+  virtual const GridEnvironment* as_map() const { return nullptr; }
+};
 
 }  // namespace amp::world

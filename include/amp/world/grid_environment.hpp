@@ -85,6 +85,7 @@ class GridEnvironment final : public Environment {
   double robot_min_diameter() const override { return min_diameter_; }
   double robot_radius() const override { return radius_; }
   Obstacles2d obstacles_2d() const override { return {nullptr, obstacles_.grid_ptr()}; }
+  const GridEnvironment* as_map() const override { return this; }
 
   const OccupancyGrid& grid() const { return obstacles_.grid(); }
   const GridObstacles& obstacles() const { return obstacles_; }

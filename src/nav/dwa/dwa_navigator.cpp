@@ -7,7 +7,6 @@
 #include "amp/core/stop_condition.hpp"
 #include "amp/nav/grid_nav_world.hpp"
 #include "amp/nav/navigator_catalog.hpp"
-#include "amp/nav/policy/policy_navigator.hpp"
 #include "amp/world/inflation_cost.hpp"
 
 namespace amp::nav {

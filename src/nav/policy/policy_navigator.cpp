@@ -58,16 +58,6 @@ WaypointControllerSettings PolicyNavigatorSettings::controller(const DriveSettin
   return c;
 }
 
-void record_execution(const Execution& e, bool stopped, core::RunRecord& r) {
-  r.status = e.arrived ? core::PlanStatus::kSolved : stopped ? core::PlanStatus::kTimeout : core::PlanStatus::kUnsolvable;
-  r.path_length = e.distance;
-  r.extra["arrived"] = e.arrived ? 1.0 : 0.0;
-  r.extra["execution_time_s"] = e.time_s;
-  r.extra["distance"] = e.distance;
-  r.extra["min_clearance"] = e.min_clearance;
-  r.extra["collisions"] = static_cast<double>(e.collisions);
-}
-
 NavigationOutcome PolicyNavigator::run(const NavTask& task, const core::StopCondition& stop, core::Rng& rng) {
   drive_.validate();
   policy_.validate();

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/nav/polygon_nav_world.hpp"
 #include "amp/nav/reference_grid.hpp"
@@ -24,12 +25,6 @@ constexpr double kMaxRasterCells = double(1 << 28);  // as rasterize_free_space:
 constexpr double kCoverCellsPerReferenceCell = 2.0;
 
 // The shortest text that reads back as v ("0.9", not "0.900000").
-std::string num(double v) {
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
-}
-
 void require(bool ok, const std::string& what) {
   if (!ok) throw ParameterError("clutter world: " + what);
 }
@@ -42,7 +37,7 @@ class CoverRaster {
   CoverRaster(double width, double height, double cell)
       : nx_(cells_along(width, cell)), ny_(cells_along(height, cell)), dx_(width / nx_), dy_(height / ny_) {
     if (static_cast<double>(nx_) * static_cast<double>(ny_) > kMaxRasterCells) {
-      throw ParameterError("clutter raster: cell " + num(cell) + " makes more than 2^28 cells");
+      throw ParameterError("clutter raster: cell " + core::number_text(cell) + " makes more than 2^28 cells");
     }
     covered_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
   }
@@ -169,29 +164,29 @@ Eigen::Vector2d place(const ClutterWorldSettings& s, double along, double across
 }  // namespace
 
 void ClutterWorldSettings::validate() const {
-  require(std::isfinite(width) && width > 0.0, "width must be > 0, got " + num(width));
-  require(std::isfinite(height) && height > 0.0, "height must be > 0, got " + num(height));
-  require(clutter > 0.0 && clutter < 1.0, "clutter must be in (0, 1), got " + num(clutter));
-  require(std::isfinite(min_radius) && min_radius > 0.0, "min_radius must be > 0, got " + num(min_radius));
+  require(std::isfinite(width) && width > 0.0, "width must be > 0, got " + core::number_text(width));
+  require(std::isfinite(height) && height > 0.0, "height must be > 0, got " + core::number_text(height));
+  require(clutter > 0.0 && clutter < 1.0, "clutter must be in (0, 1), got " + core::number_text(clutter));
+  require(std::isfinite(min_radius) && min_radius > 0.0, "min_radius must be > 0, got " + core::number_text(min_radius));
   require(std::isfinite(max_radius) && max_radius >= min_radius,
-          "max_radius must be >= min_radius " + num(min_radius) + ", got " + num(max_radius));
-  require(std::isfinite(robot_radius) && robot_radius > 0.0, "robot_radius must be > 0, got " + num(robot_radius));
+          "max_radius must be >= min_radius " + core::number_text(min_radius) + ", got " + core::number_text(max_radius));
+  require(std::isfinite(robot_radius) && robot_radius > 0.0, "robot_radius must be > 0, got " + core::number_text(robot_radius));
   require(std::isfinite(start_goal_margin) && start_goal_margin >= 0.0,
-          "start_goal_margin must be >= 0, got " + num(start_goal_margin));
+          "start_goal_margin must be >= 0, got " + core::number_text(start_goal_margin));
   require(std::isfinite(reference_cell) && reference_cell > 0.0,
-          "reference_cell must be > 0, got " + num(reference_cell));
+          "reference_cell must be > 0, got " + core::number_text(reference_cell));
   require(max_tries >= 1, "max_tries must be >= 1, got " + std::to_string(max_tries));
   const double room = 2.0 * clearance();
-  require(width > room && height > room, "a " + num(width) + " x " + num(height) +
+  require(width > room && height > room, "a " + core::number_text(width) + " x " + core::number_text(height) +
                                              " box has no room for the start and goal (each side must exceed 2 * "
-                                             "(robot_radius + start_goal_margin) = " + num(room) + ")");
+                                             "(robot_radius + start_goal_margin) = " + core::number_text(room) + ")");
   const double cells = (width / cover_cell(*this)) * (height / cover_cell(*this));
-  require(cells <= kMaxRasterCells, "reference_cell " + num(reference_cell) + " makes more than 2^28 raster cells");
+  require(cells <= kMaxRasterCells, "reference_cell " + core::number_text(reference_cell) + " makes more than 2^28 raster cells");
 }
 
 double clutter_fraction(const std::vector<world::Circle>& circles, double width, double height, double cell) {
   if (!(width > 0.0 && height > 0.0)) throw ParameterError("clutter raster: box size must be > 0");
-  if (!(cell > 0.0)) throw ParameterError("clutter raster: cell must be > 0, got " + num(cell));
+  if (!(cell > 0.0)) throw ParameterError("clutter raster: cell must be > 0, got " + core::number_text(cell));
   CoverRaster raster(width, height, cell);
   for (const world::Circle& c : circles) {
     if (!c.center.allFinite() || !(std::isfinite(c.radius) && c.radius >= 0.0)) {
@@ -252,11 +247,11 @@ ClutterWorld make_clutter_world(const ClutterWorldSettings& s, core::Rng& rng) {
     ++cut_off;
   }
   if (cut_off == 0) {
-    throw ParameterError("clutter " + num(target) + ": not reached in " + std::to_string(s.max_tries) +
-                         " tries with circles kept " + num(clear) + " m from start and goal (at most " +
-                         num(best_reached) + " covered)");
+    throw ParameterError("clutter " + core::number_text(target) + ": not reached in " + std::to_string(s.max_tries) +
+                         " tries with circles kept " + core::number_text(clear) + " m from start and goal (at most " +
+                         core::number_text(best_reached) + " covered)");
   }
-  throw ParameterError("clutter " + num(target) + ": no world with a free path in " + std::to_string(s.max_tries) +
+  throw ParameterError("clutter " + core::number_text(target) + ": no world with a free path in " + std::to_string(s.max_tries) +
                        " tries");
 }
 

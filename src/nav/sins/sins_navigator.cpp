@@ -36,7 +36,7 @@ SinsSettings SinsNavigator::arena_settings(const SinsSettings& settings, const N
   const std::string where = "problem '" + task.name + "'";
   const auto fail = [&](const std::string& what) { throw ParameterError(where + ": " + what); };
   if (!task.timeline) fail("no world");
-  const auto* polygons = dynamic_cast<const PolygonNavWorld*>(task.timeline->base().get());
+  const PolygonNavWorld* polygons = task.timeline->base()->as_polygons();
   if (polygons == nullptr || !polygons->world().obstacles().empty() || !task.timeline->events().empty()) {
     fail("sins methods draw their own worlds; the problem must be an empty box");
   }

@@ -178,17 +178,42 @@ const SinsScale& sins_scale(std::string_view name) {
   throw ParameterError("sins: unknown scale '" + std::string(name) + "' (valid: " + names + ")");
 }
 
+namespace {
+
+// The one sequence loop: world i from `world_at(i)` (drawn on the way, or already drawn), driven by
+// `policy` with the robot's draws from Rng(derive_seed(seed, kRobotStream)).
+SequenceOutcome drive_sequence(ParameterPolicy& policy, const SinsSettings& settings, std::uint64_t seed, int count,
+                               const std::function<const ClutterWorld&(int)>& world_at, const SequenceHooks& hooks) {
+  core::Rng rng(core::derive_seed(seed, kRobotStream));
+  SequenceOutcome out;
+  out.worlds.reserve(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    if (hooks.stop != nullptr && hooks.stop->time_up()) {
+      out.stopped = true;
+      break;
+    }
+    WorldTrace* trace = i + 1 == count ? hooks.last_trace : nullptr;
+    out.worlds.push_back(run_world(world_at(i), i, policy, settings, rng, hooks.stop, trace));
+    if (hooks.on_world) hooks.on_world(out.worlds.back());
+  }
+  out.cases = policy.cases();
+  return out;
+}
+
+}  // namespace
+
 SequenceWorlds draw_sequence_worlds(const SinsSettings& settings, std::uint64_t seed) {
   settings.validate();
   ClutterWorldSequence sequence(seed, settings.world);
   SequenceWorlds out;
   out.worlds.reserve(static_cast<std::size_t>(settings.worlds));
   for (int i = 0; i < settings.worlds; ++i) {
+    const bool after_change = settings.change_at > 0 && i >= settings.change_at;
     try {
       if (settings.change_at > 0 && i == settings.change_at) sequence.set_clutter(settings.clutter_after);
       out.worlds.push_back(sequence.next());
     } catch (const ParameterError& e) {
-      throw ParameterError("world " + std::to_string(i + 1) + ": " + e.what());
+      throw SequenceDrawError(i, after_change, e.what());
     }
   }
   out.rejected = sequence.rejected_total();
@@ -196,20 +221,12 @@ SequenceWorlds draw_sequence_worlds(const SinsSettings& settings, std::uint64_t 
 }
 
 SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settings, std::uint64_t seed,
-                             const SequenceWorlds& worlds, const core::StopCondition* stop) {
+                             const SequenceWorlds& worlds, const SequenceHooks& hooks) {
   settings.validate();
-  core::Rng rng(core::derive_seed(seed, kRobotStream));
-  SequenceOutcome out;
-  out.worlds.reserve(worlds.worlds.size());
-  for (std::size_t i = 0; i < worlds.worlds.size(); ++i) {
-    if (stop != nullptr && stop->time_up()) {
-      out.stopped = true;
-      break;
-    }
-    out.worlds.push_back(run_world(worlds.worlds[i], static_cast<int>(i), policy, settings, rng, stop));
-  }
+  const auto world_at = [&worlds](int i) -> const ClutterWorld& { return worlds.worlds[static_cast<std::size_t>(i)]; };
+  SequenceOutcome out =
+      drive_sequence(policy, settings, seed, static_cast<int>(worlds.worlds.size()), world_at, hooks);
   out.rejected_worlds = worlds.rejected;
-  out.cases = policy.cases();
   return out;
 }
 
@@ -217,21 +234,15 @@ SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settin
                              const core::StopCondition* stop, const std::function<void(const WorldOutcome&)>& on_world) {
   settings.validate();
   ClutterWorldSequence sequence(seed, settings.world);
-  core::Rng rng(core::derive_seed(seed, kRobotStream));
-  SequenceOutcome out;
-  out.worlds.reserve(static_cast<std::size_t>(settings.worlds));
-  for (int i = 0; i < settings.worlds; ++i) {
-    if (stop != nullptr && stop->time_up()) {
-      out.stopped = true;
-      break;
-    }
+  ClutterWorld current;
+  // Drawn only when reached, so a stopped run draws no world it does not drive.
+  const auto world_at = [&](int i) -> const ClutterWorld& {
     if (settings.change_at > 0 && i == settings.change_at) sequence.set_clutter(settings.clutter_after);
-    const ClutterWorld world = sequence.next();
-    out.worlds.push_back(run_world(world, i, policy, settings, rng, stop));
-    if (on_world) on_world(out.worlds.back());
-  }
+    current = sequence.next();
+    return current;
+  };
+  SequenceOutcome out = drive_sequence(policy, settings, seed, settings.worlds, world_at, {stop, on_world, nullptr});
   out.rejected_worlds = sequence.rejected_total();
-  out.cases = policy.cases();
   return out;
 }
 

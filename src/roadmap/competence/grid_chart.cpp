@@ -1,11 +1,12 @@
 #include "amp/roadmap/competence/grid_chart.hpp"
 
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "amp/core/error.hpp"
-#include "amp/core/joint_space.hpp"
-#include "amp/core/se3_space.hpp"
+#include "amp/core/joint_space.hpp"  // angle_difference, wrap_angle
+#include "amp/core/se3_space.hpp"    // Se3Space::rotation: a state's quaternion
 
 namespace amp::roadmap {
 
@@ -15,30 +16,25 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 GridChart::GridChart(const core::Space& space, int steps) {
   if (steps < 1) throw ParameterError("grid: steps per degree of freedom must be >= 1, got " + std::to_string(steps));
-  const double n = steps;
-  if (const auto* joints = dynamic_cast<const core::JointSpace*>(&space)) {
-    for (const core::Joint& j : joints->joints()) {
-      const bool wraps = j.kind == core::JointKind::kContinuous;
-      axis_.push_back(wraps ? Axis::kAngle : Axis::kLinear);
-      step_.push_back(wraps ? kTwoPi / n : (j.hi - j.lo) / n);
-      lo_.push_back(j.lo);
-      hi_.push_back(j.hi);
-    }
-  } else if (const auto* se3 = dynamic_cast<const core::Se3Space*>(&space)) {
-    for (int i = 0; i < 3; ++i) {
-      axis_.push_back(Axis::kTranslation);
-      step_.push_back((se3->hi()[i] - se3->lo()[i]) / n);
-      lo_.push_back(se3->lo()[i]);
-      hi_.push_back(se3->hi()[i]);
-    }
-    for (int i = 0; i < 3; ++i) {
-      axis_.push_back(Axis::kRotation);
-      step_.push_back(kTwoPi / n);
-      lo_.push_back(0.0);
-      hi_.push_back(0.0);
-    }
-  } else {
+  const std::optional<core::CoordinateLayout> layout = space.coordinate_layout();
+  // The chart knows lines and angles, and a quaternion only after a 3-D position (SE3).
+  if (!layout || (layout->quaternion && !layout->rigid_body_3d())) {
     throw ParameterError("grid: no grid chart for a '" + std::string(space.kind()) + "' space");
+  }
+  const double n = steps;
+  for (const core::CoordinateAxis& a : layout->axes) {
+    const bool wraps = a.kind == core::CoordinateKind::kAngle;
+    axis_.push_back(layout->quaternion ? Axis::kTranslation : wraps ? Axis::kAngle : Axis::kLinear);
+    step_.push_back(wraps ? kTwoPi / n : (a.hi - a.lo) / n);
+    lo_.push_back(a.lo);
+    hi_.push_back(a.hi);
+  }
+  if (!layout->quaternion) return;
+  for (int i = 0; i < 3; ++i) {
+    axis_.push_back(Axis::kRotation);
+    step_.push_back(kTwoPi / n);
+    lo_.push_back(0.0);
+    hi_.push_back(0.0);
   }
 }
 

@@ -53,7 +53,7 @@ int entry_cell(const world::OccupancyGrid& grid, const world::GridCostToGo& dp, 
 }  // namespace
 
 PlanResult GridDp::plan(const PlanningContext& ctx, const core::StopCondition& stop, core::Rng&) {
-  const auto* env = dynamic_cast<const world::GridEnvironment*>(&ctx.environment);
+  const world::GridEnvironment* env = ctx.environment.as_map();
   if (env == nullptr || env->robot().kind == world::GridRobot::Kind::kRigid) {
     throw ParameterError("grid-dp plans for a point or disc robot on a map world (map_server or MovingAI)");
   }

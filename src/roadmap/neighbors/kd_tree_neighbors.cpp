@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "amp/roadmap/neighbors/dynamic_kd_tree.hpp"
 #include "amp/roadmap/neighbors/kd_bounds.hpp"
@@ -94,8 +95,9 @@ class TreeImpl final : public KdTreeNeighbors::Impl {
 };
 
 std::unique_ptr<KdTreeNeighbors::Impl> make_impl(const core::Space& space) {
-  if (const auto* se3 = dynamic_cast<const core::Se3Space*>(&space)) {
-    return std::make_unique<TreeImpl<Se3Bound>>(space, Se3Bound(*se3));
+  const std::optional<core::CoordinateLayout> layout = space.coordinate_layout();
+  if (layout && layout->rigid_body_3d()) {
+    return std::make_unique<TreeImpl<Se3Bound>>(space, Se3Bound(*layout));
   }
   return std::make_unique<TreeImpl<EmbeddingBound>>(space, EmbeddingBound(space));
 }

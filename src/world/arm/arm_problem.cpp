@@ -6,6 +6,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/core/joint_space.hpp"
+#include "amp/core/number_text.hpp"
 #include "amp/world/arm_environment.hpp"
 #include "amp/world/arm_srdf.hpp"
 #include "amp/world/moveit_files.hpp"
@@ -18,12 +19,6 @@ namespace fs = std::filesystem;
 
 // MoveIt's default longest_valid_segment_fraction: the discrete edge check's step.
 constexpr double kMoveItResolution = 0.005;
-
-std::string number(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
 
 core::JointKind joint_kind(ArmJointType t) {
   switch (t) {
@@ -76,8 +71,8 @@ void check_limits(const ArmJoint& j, double v, const std::string& where) {
   if (!std::isfinite(v)) throw FileError(where + ": joint '" + j.name + "': the value is not a finite number");
   if (j.type == ArmJointType::kContinuous) return;
   if (v < j.lower || v > j.upper) {
-    throw FileError(where + ": joint '" + j.name + "': " + number(v) + " is outside its limits [" + number(j.lower) + ", " +
-                    number(j.upper) + "]");
+    throw FileError(where + ": joint '" + j.name + "': " + core::number_text(v) + " is outside its limits [" + core::number_text(j.lower) + ", " +
+                    core::number_text(j.upper) + "]");
   }
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 #include "amp/world/polygon_geometry.hpp"
 
 namespace amp::world {
@@ -13,8 +14,6 @@ namespace {
 // A polygon whose area is below this fraction of its bounding box's squared diagonal is degenerate
 // (collinear vertices up to rounding).
 constexpr double kMinRelativeArea = 1e-12;
-
-std::string fmt(double v) { return std::to_string(v); }
 
 // All vertices on one line (up to rounding). Tested before simplicity: the edges of such a polygon
 // fold back onto each other, and "zero area" says what is wrong better than "self-intersecting".
@@ -56,7 +55,7 @@ void validate_shapes(const Shapes2d& shapes, std::string_view what, double min_r
     }
     const double area = signed_area(v);
     if (!(std::abs(area) > kMinRelativeArea * diag_sq)) {
-      throw ParameterError(name + "zero area (area " + fmt(area) + ")");
+      throw ParameterError(name + "zero area (area " + core::number_text(area) + ")");
     }
   }
   for (std::size_t i = 0; i < shapes.circles.size(); ++i) {
@@ -65,7 +64,7 @@ void validate_shapes(const Shapes2d& shapes, std::string_view what, double min_r
     if (!c.center.allFinite()) throw ParameterError(name + "centre must be finite");
     if (!std::isfinite(c.radius) || !(c.radius > min_radius)) {
       throw ParameterError(name + "radius must be " + (min_radius < 0.0 ? "non-negative" : "positive") + ", got " +
-                           fmt(c.radius));
+                           core::number_text(c.radius));
     }
   }
 }

@@ -121,6 +121,23 @@ TEST(SinsNavigator, AProblemWithObstaclesIsRefused) {
   expect_refused(test::bundled_problem("office-map.yaml"), "the problem must be an empty box");
 }
 
+// Refused for its kind (NavWorld::as_polygons is null), though it is empty and at the origin.
+TEST(SinsNavigator, AnEmptyMapIsRefused) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("amp-sins-navigator-map-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream map(dir / "empty.map");
+    map << "type octile\nheight 40\nwidth 40\nmap\n";
+    for (int row = 0; row < 40; ++row) map << std::string(40, '.') << "\n";
+  }
+  std::ofstream(dir / "empty.yaml") << "name: EmptyMap\nworld:\n  map: empty.map\n"
+                                    << "robot: {type: disc, radius: 0.25}\nstart: [3, 20]\ngoal: [37, 20]\n";
+  const world::Problem empty = world::load_problem(dir / "empty.yaml");
+  expect_refused(empty, "the problem must be an empty box");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(SinsNavigator, BoundsAwayFromTheOriginOrTooSmallAreRefused) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("amp-sins-navigator-" + std::to_string(::getpid()));

@@ -246,5 +246,48 @@ TEST(SinsSequence, PreDrawnWorldsGiveTheStreamingOutcomes) {
   EXPECT_EQ(a.cases, b.cases);
 }
 
+// The hooks: on_world sees every outcome in order, last_trace gets the last world's drive, which
+// starts at its start and ends where its outcome says (within the goal tolerance when solved).
+TEST(SinsSequence, HooksSeeEveryWorldAndTheLastTrace) {
+  SinsSettings s;
+  s.worlds = 4;
+  s.step_limit = 200;
+  const SequenceWorlds worlds = draw_sequence_worlds(s, 5);
+  const auto policy = make_parameter_policy("random", learn::CaseSettings{}, SchemaParameters::middle(), 0.5);
+  std::vector<int> seen;
+  WorldTrace trace;
+  SequenceHooks hooks;
+  hooks.on_world = [&seen](const WorldOutcome& w) { seen.push_back(w.index); };
+  hooks.last_trace = &trace;
+  const SequenceOutcome out = run_sequence(*policy, s, 5, worlds, hooks);
+  EXPECT_EQ(seen, (std::vector<int>{0, 1, 2, 3}));
+  ASSERT_EQ(trace.positions.size(), static_cast<std::size_t>(out.worlds.back().steps) + 1);
+  EXPECT_TRUE(trace.positions.front().isApprox(worlds.worlds.back().start));
+  if (out.worlds.back().solved) {
+    EXPECT_LE((trace.positions.back() - worlds.worlds.back().goal).norm(), s.goal_tolerance + 1.0);
+  }
+  // The trace changes nothing: the same run without hooks gives the same outcomes.
+  const auto again = make_parameter_policy("random", learn::CaseSettings{}, SchemaParameters::middle(), 0.5);
+  const SequenceOutcome plain = run_sequence(*again, s, 5, worlds);
+  for (std::size_t i = 0; i < out.worlds.size(); ++i) EXPECT_EQ(out.worlds[i].steps, plain.worlds[i].steps) << i;
+}
+
+// A clutter no world can be drawn at, after the change: the error says which world and that it
+// came after the change, so that `amp sins` can name --param clutter_after.
+TEST(SinsSequence, ADrawErrorSaysWhetherItCameAfterTheChange) {
+  SinsSettings s;
+  s.worlds = 3;
+  s.change_at = 2;
+  s.clutter_after = 0.95;
+  s.world.max_tries = 3;
+  try {
+    draw_sequence_worlds(s, 1);
+    FAIL() << "expected SequenceDrawError";
+  } catch (const SequenceDrawError& e) {
+    EXPECT_TRUE(e.after_change());
+    EXPECT_EQ(std::string(e.what()).rfind("world 3: ", 0), 0u) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace amp::nav

@@ -11,6 +11,7 @@
 #include "amp/core/error.hpp"
 #include "amp/core/joint_space.hpp"
 #include "amp/core/se3_space.hpp"
+#include "amp/core/unicycle_space.hpp"
 
 namespace amp::roadmap {
 namespace {
@@ -122,6 +123,18 @@ TEST(GridChart, RefusesNoSteps) {
   const core::JointSpace space = core::make_rn_space({0}, {1});
   EXPECT_THROW(GridChart(space, 0), ParameterError);
   EXPECT_NO_THROW(GridChart(space, 1));
+}
+
+// The unicycle offers no coordinate layout (core::Space::coordinate_layout): one line naming it.
+TEST(GridChart, RefusesASpaceWithoutACoordinateLayout) {
+  const core::UnicycleSpace space({.x_min = 0, .x_max = 1, .y_min = 0, .y_max = 1, .v_min = 0, .v_max = 1,
+                                   .omega_min = -1, .omega_max = 1});
+  try {
+    GridChart chart(space, 4);
+    FAIL() << "a unicycle space was charted";
+  } catch (const ParameterError& e) {
+    EXPECT_STREQ(e.what(), "grid: no grid chart for a 'unicycle' space");
+  }
 }
 
 }  // namespace

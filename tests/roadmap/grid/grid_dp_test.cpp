@@ -14,6 +14,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/roadmap/catalog/planner_registry.hpp"
+#include "amp/world/grid_environment.hpp"
 #include "amp/world/problem.hpp"
 
 namespace amp::roadmap {
@@ -141,9 +142,29 @@ TEST(GridDp, DiscOnTheRoomsMapKeepsAwayWithInflation) {
   EXPECT_GT(mean_clearance(kept.path), mean_clearance(plain.path));
 }
 
+// grid-dp takes its map from Environment::as_map(): present on map worlds only.
+TEST(GridDp, OnlyMapWorldsOfferTheMap) {
+  const world::Problem map = map_problem("offered", {"..", ".."}, "{type: point}", "[0.5, 0.5]", "[1.5, 1.5]");
+  ASSERT_NE(map.environment->as_map(), nullptr);
+  EXPECT_EQ(&map.environment->as_map()->grid(), map.environment->obstacles_2d().grid.get());
+  for (const char* file : {"problems/walls.yaml", "problems/walls3d.yaml"}) {
+    EXPECT_EQ(world::load_problem(fs::path(AMP_SOURCE_DIR) / file).environment->as_map(), nullptr) << file;
+  }
+}
+
+void expect_refused(const world::Problem& p) {
+  try {
+    run(p);
+    FAIL() << p.name << " was planned";
+  } catch (const ParameterError& e) {
+    EXPECT_STREQ(e.what(), "grid-dp plans for a point or disc robot on a map world (map_server or MovingAI)");
+  }
+}
+
 TEST(GridDp, RefusesWorldsThatAreNotMapsAndBadSettings) {
-  const world::Problem planar = world::load_problem(fs::path(AMP_SOURCE_DIR) / "problems/walls.yaml");
-  EXPECT_THROW(run(planar), ParameterError);
+  expect_refused(world::load_problem(fs::path(AMP_SOURCE_DIR) / "problems/walls.yaml"));
+  expect_refused(map_problem("rigid", {"....", "...."}, "{type: rigid2d, shapes: [{circle: {center: [0, 0], radius: 0.2}}]}",
+                             "[0.5, 0.5, 0]", "[3.5, 1.5, 0]"));
   GridDpSettings bad;
   bad.penalty = -1.0;
   EXPECT_THROW(GridDp{bad}, ParameterError);

@@ -63,7 +63,7 @@ TEST(Se3Bound, AngleFromChordIsALowerBoundAndTightNearZero) {
 
 TEST(Se3Bound, PointAndBoxBoundsNeverExceedTheDistance) {
   const core::Se3Space space(Eigen::Vector3d(-1, -2, 0), Eigen::Vector3d(3, 2, 1), 2.5, 0.7);
-  Se3Bound bound(space);
+  Se3Bound bound(*space.coordinate_layout());
   core::Rng rng(11);
   for (int i = 0; i < 2000; ++i) {
     State a, b;

@@ -42,8 +42,4 @@ class PolicyNavigator final : public Navigator {
   PolicyNavigatorSettings policy_;
 };
 
-// The flat execution metrics of a run (arrived, execution_time_s, distance, min_clearance,
-// collisions) into a record: status, path_length and extra.
-void record_execution(const Execution& e, bool stopped, core::RunRecord& r);
-
 }  // namespace amp::nav

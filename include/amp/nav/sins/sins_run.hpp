@@ -1,11 +1,13 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "amp/core/error.hpp"
 #include "amp/core/settings_schema.hpp"
 #include "amp/nav/sins/clutter_world.hpp"
 #include "amp/nav/sins/motor_schemas.hpp"
@@ -130,17 +132,35 @@ SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settin
                              const std::function<void(const WorldOutcome&)>& on_world = {});
 
 // The worlds run_sequence meets, drawn at once: world i of ClutterWorldSequence(seed, settings.world),
-// the clutter switched at change_at. A clutter no world can be drawn at throws ParameterError
-// ("world 3: clutter 0.9: no world with a free path in 100 tries").
+// the clutter switched at change_at. A clutter no world can be drawn at throws SequenceDrawError
+// ("world 3: clutter 0.9: no world with a free path in 100 tries"), which says whether the world
+// came after the change, so that a caller can name its own option.
 struct SequenceWorlds {
   std::vector<ClutterWorld> worlds;
   int rejected = 0;
 };
+class SequenceDrawError : public ParameterError {
+ public:
+  SequenceDrawError(int index, bool after_change, const std::string& detail)
+      : ParameterError("world " + std::to_string(index + 1) + ": " + detail), after_change_(after_change) {}
+  bool after_change() const { return after_change_; }
+
+ private:
+  bool after_change_;
+};
 SequenceWorlds draw_sequence_worlds(const SinsSettings& settings, std::uint64_t seed);
+
+// What a caller may watch of a sequence: `stop` (optional) ends it early, `on_world` sees each
+// world's outcome as it ends, and `last_trace` (optional) receives the last world's driven trace.
+struct SequenceHooks {
+  const core::StopCondition* stop = nullptr;
+  std::function<void(const WorldOutcome&)> on_world;
+  WorldTrace* last_trace = nullptr;
+};
 // run_sequence over worlds already drawn (so that several systems, or several step limits, meet the
 // same worlds without drawing them again): the same outcomes as run_sequence(policy, settings, seed)
 // when `worlds` is draw_sequence_worlds(settings, seed).
 SequenceOutcome run_sequence(ParameterPolicy& policy, const SinsSettings& settings, std::uint64_t seed,
-                             const SequenceWorlds& worlds, const core::StopCondition* stop = nullptr);
+                             const SequenceWorlds& worlds, const SequenceHooks& hooks = {});
 
 }  // namespace amp::nav

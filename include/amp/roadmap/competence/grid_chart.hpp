@@ -9,15 +9,16 @@
 namespace amp::roadmap {
 
 // Flat coordinates around an origin state, for searching a C-space on a grid (the A* local
-// planner of Isto 2003, docs/run-cost-variance.md). One coordinate per degree of freedom:
-//   JointSpace (Rn, SE2, linkages, SCARA): joint offsets from the origin (angles of continuous
-//     joints the short way round); grid step (hi - lo) / steps, 2 pi / steps for continuous joints;
-//   Se3Space: translation offset, then the rotation vector of q_origin^-1 q (the exponential chart
-//     at the origin, valid everywhere, so a search may wander past pi); translation step
-//     (hi - lo) / steps per axis, rotation step 2 pi / steps.
+// planner of Isto 2003, docs/run-cost-variance.md). One coordinate per degree of freedom, read
+// from the space's core::CoordinateLayout:
+//   lines and angles (JointSpace: Rn, SE2, linkages, SCARA): offsets from the origin (angles the
+//     short way round); grid step (hi - lo) / steps, 2 pi / steps for angles;
+//   a 3-D position and a quaternion (Se3Space): translation offset, then the rotation vector of
+//     q_origin^-1 q (the exponential chart at the origin, valid everywhere, so a search may wander
+//     past pi); translation step (hi - lo) / steps per axis, rotation step 2 pi / steps.
 class GridChart {
  public:
-  // Throws ParameterError for steps < 1 and for a space of another kind.
+  // Throws ParameterError for steps < 1 and for a space with no such layout (UnicycleSpace).
   GridChart(const core::Space& space, int steps);
 
   int dimension() const { return static_cast<int>(step_.size()); }

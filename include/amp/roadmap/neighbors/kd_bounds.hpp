@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "amp/core/se3_space.hpp"
+#include "amp/core/coordinate_layout.hpp"
 #include "amp/core/space.hpp"
 
 namespace amp::roadmap {
@@ -87,9 +87,10 @@ class EmbeddingBound {
 // w >= 0 and the query is tried with both signs, since q and -q are the same rotation.
 class Se3Bound {
  public:
-  // Weights shaved by a relative 1e-12 so that rounding keeps the bound below the true distance.
-  explicit Se3Bound(const core::Se3Space& space)
-      : wt_(space.translation_weight() * kShave), wr_(space.rotation_weight() * kShave) {}
+  // For a layout with layout.rigid_body_3d() (Se3Space's). Weights shaved by a relative 1e-12 so
+  // that rounding keeps the bound below the true distance.
+  explicit Se3Bound(const core::CoordinateLayout& layout)
+      : wt_(layout.axes.front().weight * kShave), wr_(layout.rotation_weight * kShave) {}
 
   int dimension() const { return 7; }
   void store(const State& s, double* out) {

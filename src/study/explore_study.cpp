@@ -1,4 +1,4 @@
-#include "explore_run.hpp"
+#include "amp/study/explore_study.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,26 +8,18 @@
 #include <sstream>
 
 #include "amp/core/error.hpp"
+#include "amp/core/param_routing.hpp"
+#include "amp/core/number_text.hpp"
 #include "amp/nav/nav_task.hpp"
-#include "amp/stats/descriptive.hpp"
 #include "amp/viz/pgcs_figures.hpp"
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/occupancy_grid.hpp"
-#include "cli_util.hpp"
+#include "amp/study/output_dir.hpp"
+#include "amp/study/record_json.hpp"
 
-namespace amp::cli {
+namespace amp::study {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-std::string number_text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
 
 std::string point_text(const Eigen::Vector2d& p) {
   char buf[64];
@@ -46,64 +38,40 @@ void check_query_point(const nav::NavTask& task, const Eigen::Vector2d& p, std::
   }
   if (!world.disc_free(p, task.robot_radius)) {
     throw ParameterError(where + " is in an obstacle (the robot's disc of radius " +
-                         number_text(task.robot_radius) + " is not free there)");
+                         core::number_text(task.robot_radius) + " is not free there)");
   }
-}
-
-// The median of a sample, null when it is empty (no query solved: no path ratio).
-nlohmann::ordered_json median_or_null(std::vector<double> values) {
-  if (values.empty()) return nullptr;
-  std::sort(values.begin(), values.end());
-  return stats::quantile(values, 0.5);
 }
 
 nlohmann::ordered_json flat_record(const world::Problem& problem, const ExploreSetup& setup, const ExploreResult& r) {
-  const nav::PgcsSession& s = *r.session;
-  std::vector<double> replans, ratios, times;
-  int solved = 0, replans_max = 0;
-  for (const nav::QueryRecord& q : r.queries) {
-    replans.push_back(q.replans);
-    replans_max = std::max(replans_max, q.replans);
-    times.push_back(q.plan_time_s);
-    if (q.solved) {
-      ++solved;
-      ratios.push_back(q.ratio);
-    }
-  }
+  const nav::PgcsSummary& s = r.summary;
   nlohmann::ordered_json j;
   j["problem"] = problem.name;
   j["method"] = "pgcs";
   j["exploration"] = setup.run.exploration;
   j["seed"] = setup.seed;
-  j["steps"] = s.steps();
-  j["clusters"] = s.clusters().size();
-  j["coverage"] = s.coverage();
-  j["quantisation_error"] = s.quantisation_error();
-  j["illegal_edges"] = s.memory().size();
-  j["suspect_edges"] = s.memory().suspects();
-  j["queries"] = r.queries.size();
-  j["queries_solved"] = solved;
-  j["replans_median"] = median_or_null(replans);
-  j["replans_max"] = replans_max;
-  j["path_ratio_median"] = median_or_null(ratios);
-  j["explore_time_s"] = r.explore_time_s;
+  j["steps"] = s.steps;
+  j["clusters"] = s.clusters;
+  j["coverage"] = s.coverage;
+  j["quantisation_error"] = s.quantisation_error;
+  j["illegal_edges"] = s.illegal_edges;
+  j["suspect_edges"] = s.suspect_edges;
+  j["queries"] = s.queries;
+  j["queries_solved"] = s.queries_solved;
+  j["replans_median"] = optional_json(s.replans_median);
+  j["replans_max"] = s.replans_max;
+  j["path_ratio_median"] = optional_json(s.path_ratio_median);
+  j["explore_time_s"] = r.run.explore_time_s;
   // Route planning only (the method's cost); driving is the simulated robot's time.
-  j["query_time_median_s"] = median_or_null(times);
+  j["query_time_median_s"] = optional_json(s.query_time_median_s);
   return j;
-}
-
-// A parameter's value as JSON: integers as integers (the schema stores every number as a double).
-nlohmann::ordered_json param_json(const core::ParamValue& v) {
-  if (!v.is_number()) return v.string();
-  const double x = v.number();
-  if (x == std::floor(x) && std::abs(x) < 9e15) return static_cast<long long>(x);
-  return x;
 }
 
 nlohmann::ordered_json point_json(const Eigen::Vector2d& p) { return nlohmann::ordered_json::array({p.x(), p.y()}); }
 
-nlohmann::ordered_json full_record(const ExploreResult& r) {
-  const nav::PgcsSession& s = *r.session;
+}  // namespace
+
+nlohmann::ordered_json explore_record(const ExploreResult& r) {
+  const nav::PgcsSession& s = *r.run.session;
   nlohmann::ordered_json j = r.record;
   nlohmann::ordered_json settings;
   for (const auto& [name, value] : nav::PgcsRunSettings::schema().values(s.settings())) {
@@ -114,8 +82,8 @@ nlohmann::ordered_json full_record(const ExploreResult& r) {
   }
   j["settings"] = settings;
   nlohmann::ordered_json queries = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < r.queries.size(); ++i) {
-    const nav::QueryRecord& q = r.queries[i];
+  for (std::size_t i = 0; i < r.run.queries.size(); ++i) {
+    const nav::QueryRecord& q = r.run.queries[i];
     nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
     for (const auto& b : q.blocks) blocks.push_back(point_json(b));
     queries.push_back({{"start", point_json(q.start)},
@@ -129,7 +97,7 @@ nlohmann::ordered_json full_record(const ExploreResult& r) {
                        {"shortest", std::isfinite(q.shortest) ? nlohmann::ordered_json(q.shortest) : nlohmann::ordered_json()},
                        {"ratio", q.ratio},
                        {"plan_time_s", q.plan_time_s},
-                       {"wall_time_s", r.query_wall_s[i]},
+                       {"wall_time_s", r.run.query_wall_s[i]},
                        {"illegal_edges", q.illegal_edges},
                        {"blocks", blocks}});
   }
@@ -145,6 +113,8 @@ nlohmann::ordered_json full_record(const ExploreResult& r) {
   j["curves"] = curves;
   return j;
 }
+
+namespace {
 
 // The obstacles that appeared during the first `steps` steps (a vanish event is not subtracted:
 // a door that closed and opened again is still drawn, as where the robot met one).
@@ -188,6 +158,14 @@ viz::PgcsDrawing drawing_of(const world::Problem& problem, const nav::PgcsSessio
 
 }  // namespace
 
+void read_explore_params(const core::ParamMap& params, ExploreSetup& setup) {
+  const auto& run_schema = nav::PgcsRunSettings::schema();
+  const auto& pgcs_schema = learn::PgcsSettings::schema();
+  const std::vector<core::ParamMap> routed = core::route_params(params, {&pgcs_schema.specs(), &run_schema.specs()});
+  setup.run = run_schema.read(core::Params(run_schema.owner(), run_schema.specs(), routed[1]));
+  setup.pgcs = pgcs_schema.read(core::Params(pgcs_schema.owner(), pgcs_schema.specs(), routed[0]));
+}
+
 ExploreResult run_exploration(const world::Problem& problem, const ExploreSetup& setup) {
   nav::NavTask task = nav::make_nav_task(problem);
   for (std::size_t i = 0; i < setup.queries.size(); ++i) {
@@ -195,25 +173,13 @@ ExploreResult run_exploration(const world::Problem& problem, const ExploreSetup&
     check_query_point(task, setup.queries[i].second, i, "target");
   }
   ExploreResult r;
-  r.session = std::make_unique<nav::PgcsSession>(std::move(task), setup.run, setup.pgcs, setup.seed);
-  const long total = setup.run.steps;
-  const auto t0 = Clock::now();
-  std::function<void(long)> progress;
-  if (setup.progress) progress = [&setup, total](long done) { setup.progress(done, total); };
-  r.session->explore(total, nullptr, progress);
-  r.explore_time_s = seconds_since(t0);
-
-  const auto pairs = setup.queries.empty() ? r.session->draw_queries(setup.run.queries) : setup.queries;
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const auto q0 = Clock::now();
-    try {
-      r.queries.push_back(r.session->query(pairs[i].first, pairs[i].second));
-    } catch (const ParameterError& e) {
-      // A door that closed during exploration may cover a point that was free at the start.
-      throw ParameterError("--query " + std::to_string(i + 1) + ": " + e.what());
-    }
-    r.query_wall_s.push_back(seconds_since(q0));
+  try {
+    r.run = nav::run_pgcs(std::move(task), setup.run, setup.pgcs, setup.seed, setup.queries, nullptr, setup.progress);
+  } catch (const nav::PgcsQueryError& e) {
+    // A door that closed during exploration may cover a point that was free at the start.
+    throw ParameterError("--query " + std::to_string(e.index() + 1) + ": " + e.detail());
   }
+  r.summary = nav::summarise_pgcs(*r.run.session, r.run.queries);
   r.record = flat_record(problem, setup, r);
   return r;
 }
@@ -224,25 +190,12 @@ const std::vector<std::string>& explore_output_files() {
 }
 
 void check_explore_dir(const std::filesystem::path& dir, bool force, const std::string& option) {
-  std::error_code ec;
-  if (std::filesystem::exists(dir, ec)) {
-    if (!std::filesystem::is_directory(dir, ec)) {
-      throw Error(option + ": '" + dir.string() + "' is a file, expected a directory");
-    }
-    for (const std::string& f : explore_output_files()) check_writable(dir / f, force, option);
-    return;
-  }
-  const auto parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(parent, ec)) {
-    throw Error(option + ": directory '" + parent.string() + "' does not exist");
-  }
+  check_output_dir(dir, explore_output_files(), force, option);
 }
 
 void write_explore_outputs(const world::Problem& problem, const ExploreResult& r, const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw FileError(dir.string() + ": cannot create the directory: " + ec.message());
-  const nav::PgcsSession& s = *r.session;
+  create_output_dir(dir);
+  const nav::PgcsSession& s = *r.run.session;
   const viz::PgcsDrawing drawing = drawing_of(problem, s);
   const std::string name = problem.name + " — PGCS, " + s.settings().exploration + ", seed " +
                            r.record.at("seed").dump();
@@ -253,9 +206,9 @@ void write_explore_outputs(const world::Problem& problem, const ExploreResult& r
   }
   viz::write_text_file((dir / "curves.svg").string(), viz::pgcs_curves_svg(curves, name));
   std::vector<viz::QueryDrawing> queries;
-  for (const nav::QueryRecord& q : r.queries) queries.push_back({q.start, q.target, q.solved, q.replans, q.trace, q.blocks});
+  for (const nav::QueryRecord& q : r.run.queries) queries.push_back({q.start, q.target, q.solved, q.replans, q.trace, q.blocks});
   viz::write_text_file((dir / "queries.svg").string(), viz::pgcs_queries_svg(problem, drawing, queries, name));
-  viz::write_text_file((dir / "record.json").string(), full_record(r).dump(2) + "\n");
+  viz::write_text_file((dir / "record.json").string(), explore_record(r).dump(2) + "\n");
 }
 
 std::string format_explore_table(const nlohmann::ordered_json& record) {
@@ -280,4 +233,4 @@ std::string format_explore_table(const nlohmann::ordered_json& record) {
   return out.str();
 }
 
-}  // namespace amp::cli
+}  // namespace amp::study

@@ -1,4 +1,4 @@
-#include "sins_run.hpp"
+#include "amp/study/sins_study.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -6,13 +6,15 @@
 #include <sstream>
 
 #include "amp/core/error.hpp"
+#include "amp/core/param_routing.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/viz/sins_figures.hpp"
-#include "cli_util.hpp"
+#include "amp/study/output_dir.hpp"
+#include "amp/study/record_json.hpp"
 
-namespace amp::cli {
+namespace amp::study {
 
 namespace {
 
@@ -31,52 +33,30 @@ std::vector<std::string> figure_order(const SinsResult& r) {
   return order;
 }
 
-// A number as JSON, null when not finite (JSON has no infinity).
-nlohmann::ordered_json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nullptr; }
-
-// A parameter's value as JSON: integers as integers (the schema stores every number as a double).
-nlohmann::ordered_json param_json(const core::ParamValue& v) {
-  if (!v.is_number()) return v.string();
-  const double x = v.number();
-  if (x == std::floor(x) && std::abs(x) < 9e15) return static_cast<long long>(x);
-  return x;
-}
-
-std::vector<nav::ClutterWorld> draw_worlds(const SinsSetup& setup, int& rejected) {
-  const nav::SinsSettings& s = setup.sins;
-  nav::ClutterWorldSequence sequence(setup.seed, s.world);
-  std::vector<nav::ClutterWorld> worlds;
-  worlds.reserve(static_cast<std::size_t>(s.worlds));
-  for (int i = 0; i < s.worlds; ++i) {
-    const bool after_change = s.change_at > 0 && i >= s.change_at;
-    try {
-      if (s.change_at > 0 && i == s.change_at) sequence.set_clutter(s.clutter_after);
-      worlds.push_back(sequence.next());
-    } catch (const ParameterError& e) {
-      throw ParameterError(std::string(after_change ? "--param clutter_after" : "--clutter") + ": world " +
-                           std::to_string(i + 1) + ": " + e.what());
-    }
+// The worlds every system meets (nav::draw_sequence_worlds), a clutter no world can be drawn at
+// reported naming the option that set it.
+nav::SequenceWorlds draw_worlds(const SinsSetup& setup) {
+  try {
+    return nav::draw_sequence_worlds(setup.sins, setup.seed);
+  } catch (const nav::SequenceDrawError& e) {
+    throw ParameterError(std::string(e.after_change() ? "--param clutter_after" : "--clutter") + ": " + e.what());
   }
-  rejected = sequence.rejected_total();
-  return worlds;
 }
 
-// nav::run_sequence over worlds already drawn, keeping the last world's trace.
-SystemRun run_system(const SinsSetup& setup, const std::string& system, const std::vector<nav::ClutterWorld>& worlds,
+// One system over the drawn worlds: nav::run_sequence, the last world's trace kept.
+SystemRun run_system(const SinsSetup& setup, const std::string& system, const nav::SequenceWorlds& worlds,
                      const std::function<void()>& world_done) {
   SystemRun run;
   run.system = system;
   const std::unique_ptr<nav::ParameterPolicy> policy =
       nav::make_parameter_policy(system, setup.cases, setup.initial, setup.sins.stall_exploration, setup.plus);
-  core::Rng rng(core::derive_seed(setup.seed, nav::kRobotStream));
-  run.worlds.reserve(worlds.size());
-  for (std::size_t i = 0; i < worlds.size(); ++i) {
-    nav::WorldTrace* trace = i + 1 == worlds.size() ? &run.last_trace : nullptr;
-    run.worlds.push_back(nav::run_world(worlds[i], static_cast<int>(i), *policy, setup.sins, rng, nullptr, trace));
-    if (world_done) world_done();
-  }
+  nav::SequenceHooks hooks;
+  hooks.last_trace = &run.last_trace;
+  if (world_done) hooks.on_world = [&world_done](const nav::WorldOutcome&) { world_done(); };
+  nav::SequenceOutcome outcome = nav::run_sequence(*policy, setup.sins, setup.seed, worlds, hooks);
+  run.worlds = std::move(outcome.worlds);
   run.estimators = nav::estimate(run.worlds, run.worlds.size());
-  run.cases = policy->cases();
+  run.cases = outcome.cases;
   return run;
 }
 
@@ -105,7 +85,9 @@ nlohmann::ordered_json flat_record(const SinsSetup& setup, const SinsResult& r) 
   return j;
 }
 
-nlohmann::ordered_json full_record(const SinsSetup& setup, const SinsResult& r) {
+}  // namespace
+
+nlohmann::ordered_json sins_record(const SinsSetup& setup, const SinsResult& r) {
   nlohmann::ordered_json j = r.record;
   nlohmann::ordered_json settings;
   settings["system"] = setup.system;
@@ -147,6 +129,8 @@ nlohmann::ordered_json full_record(const SinsSetup& setup, const SinsResult& r) 
   return j;
 }
 
+namespace {
+
 std::string number_text(const char* format, double x) {
   char buf[48];
   std::snprintf(buf, sizeof buf, format, x);
@@ -176,20 +160,44 @@ viz::SinsRunDrawing run_drawing(const SinsSetup& setup, const nav::ClutterWorld&
 
 }  // namespace
 
+void read_sins_params(const core::ParamMap& params, const nav::SinsScale& scale, SinsSetup& setup) {
+  const auto& sins_schema = nav::SinsSettings::schema();
+  const auto& motor_schema = nav::SchemaParameters::schema();
+  const auto& case_schema = learn::CaseSettings::schema();
+  const auto& plus_schema = learn::SplittingCaseSettings::schema();
+  // max_cases goes to the cases and to sins-plus, as both declare it.
+  std::vector<core::ParamMap> routed = core::route_params(
+      params, {&sins_schema.specs(), &motor_schema.specs(), &case_schema.specs(), &plus_schema.specs()});
+  // The scale's step limit and radii, unless given; its box after reading (the box is no parameter).
+  nav::SinsSettings scaled;
+  scaled.set_scale(scale);
+  routed[0].try_emplace("step_limit", static_cast<double>(scaled.step_limit));
+  routed[0].try_emplace("min_radius", scaled.world.min_radius);
+  routed[0].try_emplace("max_radius", scaled.world.max_radius);
+  setup.sins = sins_schema.read(core::Params(sins_schema.owner(), sins_schema.specs(), routed[0]));
+  setup.initial = motor_schema.read(core::Params(motor_schema.owner(), motor_schema.specs(), routed[1]));
+  setup.cases = case_schema.read(core::Params(case_schema.owner(), case_schema.specs(), routed[2]));
+  setup.plus = plus_schema.read(core::Params(plus_schema.owner(), plus_schema.specs(), routed[3]));
+  setup.sins.world.width = scaled.world.width;
+  setup.sins.world.height = scaled.world.height;
+}
+
 SinsResult run_sins(const SinsSetup& setup, bool all_systems) {
   SinsResult r;
-  r.worlds = draw_worlds(setup, r.rejected_worlds);
+  nav::SequenceWorlds drawn = draw_worlds(setup);
   std::vector<std::string> order = {setup.system};
   if (all_systems) {
     for (const std::string& s : systems()) {
       if (s != setup.system) order.push_back(s);
     }
   }
-  const int total = static_cast<int>(r.worlds.size() * order.size());
+  const int total = static_cast<int>(drawn.worlds.size() * order.size());
   int done = 0;
   std::function<void()> world_done;
   if (setup.progress) world_done = [&] { setup.progress(++done, total); };
-  for (const std::string& s : order) r.runs.push_back(run_system(setup, s, r.worlds, world_done));
+  for (const std::string& s : order) r.runs.push_back(run_system(setup, s, drawn, world_done));
+  r.worlds = std::move(drawn.worlds);
+  r.rejected_worlds = drawn.rejected;
   r.record = flat_record(setup, r);
   return r;
 }
@@ -200,25 +208,12 @@ const std::vector<std::string>& sins_output_files() {
 }
 
 void check_sins_dir(const std::filesystem::path& dir, bool force, const std::string& option) {
-  std::error_code ec;
-  if (std::filesystem::exists(dir, ec)) {
-    if (!std::filesystem::is_directory(dir, ec)) {
-      throw Error(option + ": '" + dir.string() + "' is a file, expected a directory");
-    }
-    for (const std::string& f : sins_output_files()) check_writable(dir / f, force, option);
-    return;
-  }
-  const auto parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(parent, ec)) {
-    throw Error(option + ": directory '" + parent.string() + "' does not exist");
-  }
+  check_output_dir(dir, sins_output_files(), force, option);
 }
 
 void write_sins_outputs(const SinsSetup& setup, const SinsResult& r, const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw FileError(dir.string() + ": cannot create the directory: " + ec.message());
-  viz::write_text_file((dir / "record.json").string(), full_record(setup, r).dump(2) + "\n");
+  create_output_dir(dir);
+  viz::write_text_file((dir / "record.json").string(), sins_record(setup, r).dump(2) + "\n");
 
   // Figure 5 in the paper's order of the systems, whichever was chosen.
   std::vector<viz::SinsCurves> curves;
@@ -284,4 +279,4 @@ std::string format_sins_comparison(const SinsResult& r) {
   return out.str();
 }
 
-}  // namespace amp::cli
+}  // namespace amp::study

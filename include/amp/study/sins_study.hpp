@@ -13,7 +13,7 @@
 #include "amp/nav/sins/motor_schemas.hpp"
 #include "amp/nav/sins/sins_run.hpp"
 
-namespace amp::cli {
+namespace amp::study {
 
 // One `amp sins` run: the settings read from the command line.
 struct SinsSetup {
@@ -44,16 +44,24 @@ struct SinsResult {
   nlohmann::ordered_json record;  // the chosen system's flat record (what --json prints)
 };
 
-// Draws the worlds (a clutter no world can be drawn at is reported naming --clutter, or --param
-// clutter_after after the change), then drives the chosen system over them, and with `all_systems`
-// the other two as well, each with its own robot stream Rng(derive_seed(seed, kRobotStream)):
-// exactly nav::run_sequence, with the last world's trace kept.
+// The settings from parameters by their schema names (SinsSettings, SchemaParameters, CaseSettings,
+// SplittingCaseSettings; `amp sins --param`, Python's params=) at `scale` (its step limit and radii
+// unless given, its box), through core::route_params; the rest of `setup` is left as it is. Throws
+// ParameterError (one line, no option named) for an unknown name or a bad value.
+void read_sins_params(const core::ParamMap& params, const nav::SinsScale& scale, SinsSetup& setup);
+
+// Draws the worlds once (nav::draw_sequence_worlds; a clutter no world can be drawn at is reported
+// naming --clutter, or --param clutter_after after the change), then runs nav::run_sequence over
+// them for the chosen system, and with `all_systems` for the paper's other two as well, keeping the
+// last world's trace.
 SinsResult run_sins(const SinsSetup& setup, bool all_systems);
 
 // The files `-o DIR` gets, in the order they are written.
 const std::vector<std::string>& sins_output_files();
 // Refuses (before any work) a DIR that is a file, or one of its files that exists, unless `force`.
 void check_sins_dir(const std::filesystem::path& dir, bool force, const std::string& option);
+// record.json: the flat record, the settings, each system's estimators and every world's outcome.
+nlohmann::ordered_json sins_record(const SinsSetup& setup, const SinsResult& result);
 // Writes record.json, learning.svg (Figure 5) and run.svg (Figure 4) into `dir` (created if missing).
 void write_sins_outputs(const SinsSetup& setup, const SinsResult& result, const std::filesystem::path& dir);
 
@@ -62,4 +70,4 @@ std::string format_sins_table(const nlohmann::ordered_json& record);
 // The systems side by side (final estimators), what `amp sins -o DIR` prints after the record.
 std::string format_sins_comparison(const SinsResult& result);
 
-}  // namespace amp::cli
+}  // namespace amp::study

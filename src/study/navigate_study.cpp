@@ -1,40 +1,37 @@
 // The runs of `amp navigate`, shared with `amp demo`: both methods of the policy-search paper on
 // the same seeds, Table 2, and the paper's Figures 3 and 4.
-#include "navigate_run.hpp"
+#include "amp/study/navigate_study.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "amp/core/error.hpp"
+#include "amp/core/param_routing.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/nav/drive_settings.hpp"
 #include "amp/nav/footprint.hpp"
 #include "amp/nav/nav_task.hpp"
 #include "amp/nav/navigator_catalog.hpp"
 #include "amp/stats/descriptive.hpp"
+#include "amp/study/navigation_run.hpp"
+#include "amp/study/output_dir.hpp"
 #include "amp/viz/policy_figures.hpp"
 #include "amp/viz/scene_renderer.hpp"
 
-namespace amp::cli {
+namespace amp::study {
 
 namespace {
 
 constexpr double kRunTimeLimitS = 600.0;  // CPU seconds per run; simulated time has its own limit (max_time)
 
-double median(std::vector<double> x) {
-  if (x.empty()) return 0.0;
-  std::sort(x.begin(), x.end());
-  return stats::quantile(x, 0.5);
-}
+// The median of the runs (there is at least one).
+double median(const std::vector<double>& x) { return stats::median(x).value_or(0.0); }
 
-// The parameters in `params` that `method` declares: a --param meant for one method is not an
+// The parameters in `params` that `method` declares: a parameter meant for one method is not an
 // error for the other, which runs beside it for Table 2.
 core::ParamMap declared_params(const std::string& method, const core::ParamMap& params) {
-  core::ParamMap out;
-  for (const core::ParamSpec& spec : nav::builtin_navigators().info(method).params) {
-    if (const auto it = params.find(spec.name); it != params.end()) out.insert(*it);
-  }
-  return out;
+  const NavigateParams routed = route_navigate_params(params);
+  return method == kPolicyMethod ? routed.policy : routed.dwa;
 }
 
 MethodRuns run_method(const world::Problem& problem, const std::string& method, const NavigateSetup& setup) {
@@ -45,7 +42,7 @@ MethodRuns run_method(const world::Problem& problem, const std::string& method, 
   int solved = 0;
   for (int i = 0; i < setup.runs; ++i) {
     const std::uint64_t seed = core::derive_seed(setup.seed, static_cast<std::uint64_t>(i));
-    nav::NavigationOutcome out = nav::execute_navigation(problem, method, params, seed, kRunTimeLimitS);
+    nav::NavigationOutcome out = run_navigation(problem, method, params, seed, kRunTimeLimitS);
     const core::RunRecord& r = out.record;
     if (r.status == core::PlanStatus::kError) throw Error(method + ": " + r.message);
     const bool arrived = r.extra.at("arrived") != 0.0;
@@ -108,6 +105,18 @@ viz::PolicyPhasesDrawing phases_drawing(const world::Problem& problem, const Met
 
 }  // namespace
 
+NavigateParams route_navigate_params(const core::ParamMap& params) {
+  const auto& catalog = nav::builtin_navigators();
+  std::vector<core::ParamMap> routed =
+      core::route_params(params, {&catalog.info(kPolicyMethod).params, &catalog.info(kDwaMethod).params});
+  return {std::move(routed[0]), std::move(routed[1])};
+}
+
+const std::vector<std::string>& navigate_output_files() {
+  static const std::vector<std::string> files = {"record.json", "phases.svg", "velocity.svg"};
+  return files;
+}
+
 NavigateResult run_both_methods(const world::Problem& problem, const NavigateSetup& setup) {
   NavigateResult r;
   r.policy = run_method(problem, kPolicyMethod, setup);
@@ -137,18 +146,20 @@ std::string format_table2(const NavigateResult& r, const NavigateSetup& setup) {
   return out;
 }
 
-void write_navigate_outputs(const world::Problem& problem, const NavigateResult& r, const std::string& method,
-                            const NavigateSetup& setup, const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw FileError(dir.string() + ": cannot create the directory: " + ec.message());
+nlohmann::json navigate_record(const NavigateResult& r, const std::string& method, const NavigateSetup& setup) {
   const MethodRuns& chosen = method == kPolicyMethod ? r.policy : r.dwa;
   nlohmann::json full = chosen.record;
   full["params"] = nlohmann::json::object();
   for (const auto& [name, value] : setup.params) full["params"][name] = value.to_string();
   full["table2"] = nlohmann::json::array({r.policy.record, r.dwa.record});
   full["run_details"] = chosen.runs;
-  viz::write_text_file((dir / "record.json").string(), full.dump(2) + "\n");
+  return full;
+}
+
+void write_navigate_outputs(const world::Problem& problem, const NavigateResult& r, const std::string& method,
+                            const NavigateSetup& setup, const std::filesystem::path& dir) {
+  create_output_dir(dir);
+  viz::write_text_file((dir / "record.json").string(), navigate_record(r, method, setup).dump(2) + "\n");
   const nav::DriveSettings drive = drive_settings(setup);
   viz::write_text_file((dir / "phases.svg").string(),
                        viz::policy_phases_svg(problem, phases_drawing(problem, r.policy, drive),
@@ -159,4 +170,4 @@ void write_navigate_outputs(const world::Problem& problem, const NavigateResult&
                                                   problem.name + ": velocity profiles (first seed)"));
 }
 
-}  // namespace amp::cli
+}  // namespace amp::study
