@@ -1,10 +1,11 @@
 // PGCS queries (Vlassis, Papakonstantinou & Tsanakas, section 4): the modified A* on the learned
 // graph of the bundled office map after 200,000 exploration steps, as a query runs it on every
 // replan, without the driving. Target: one query with its replans <= 1 ms.
-// BM_PgcsRoutePlan: one plan between random free points (with the portals' extra edges and
-// exemplars, as the session plans; up to 1,000 clusters), its graph's neighbours found afresh (/0)
-// or kept (/1). BM_PgcsQueryPlanning/K: whole queries driven in the simulator with up to K
-// clusters, reporting the planning time per query (counter plan_ms), replans and edges left out.
+// BM_PgcsRoutePlan: one plan between random free points on the portal graph (the portals' extra
+// edges and exemplars, as the session plans; up to 1,000 clusters), on a new graph (/0: its
+// neighbours found afresh) or a kept one (/1). BM_PgcsQueryPlanning/K: whole queries driven in the
+// simulator with up to K clusters, reporting the planning time per query (counter plan_ms),
+// replans and edges left out.
 #include <map>
 #include <memory>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "amp/core/rng.hpp"
 #include "amp/nav/pgcs/pgcs_session.hpp"
+#include "amp/nav/pgcs/portal_graph.hpp"
 #include "amp/world/problem.hpp"
 
 namespace {
@@ -36,23 +38,23 @@ amp::nav::PgcsSession& explored_office(int max_clusters, int user) {
   return *s;
 }
 
-// state.range(0): the plans share a graph_key (the neighbours found once are reused), or not.
+// state.range(0): the plans share one graph (the neighbours found once are reused), or each plans
+// on a new one.
 void BM_PgcsRoutePlan(benchmark::State& state) {
   amp::nav::PgcsSession& s = explored_office(1000, 0);
   const auto pairs = s.draw_queries(256);
   amp::nav::RoutePlanner planner({0.25, 0.25, 3, 1.0});
+  amp::nav::PortalGraph kept(s.explorer(), s.memory());
   std::size_t i = 0, expanded = 0;
   for (auto _ : state) {
     const auto& [a, b] = pairs[i++ % pairs.size()];
-    const amp::nav::Route r = planner.plan(
-        s.clusters(), s.memory(), a, b, {}, 0.25, [&](int x, int y) { return s.portal(x, y) != nullptr; },
-        [&](int k) { return s.node_point(k); }, -1,
-        [&](int k, std::vector<int>& out) {
-          for (int j : s.portals().crossed(k)) {
-            if (s.portal(k, j) != nullptr) out.push_back(j);
-          }
-        },
-        nullptr, state.range(0) != 0 ? 1 : 0);
+    amp::nav::Route r;
+    if (state.range(0) != 0) {
+      r = planner.plan(kept, a, b);
+    } else {
+      amp::nav::PortalGraph fresh(s.explorer(), s.memory());
+      r = planner.plan(fresh, a, b);
+    }
     expanded += r.expanded;
     benchmark::DoNotOptimize(r.cost);
   }

@@ -66,74 +66,108 @@ std::vector<int> WardDendrogram::cut(int c) const {
   return labels;
 }
 
-WardDendrogram ward_linkage(const Eigen::MatrixXd& points, const core::StopCondition* stop) {
-  validate_points(points, "ward");
-  const int n = static_cast<int>(points.rows());
-  const auto un = static_cast<std::size_t>(n);
-  // d2[i*n + j]: squared Ward distance between the clusters in slots i and j (initially |xi - xj|^2).
-  std::vector<double> d2(un * un, 0.0);
-  for (int i = 0; i < n; ++i) {
-    poll(stop);
-    for (int j = i + 1; j < n; ++j) {
-      const double d = (points.row(i) - points.row(j)).squaredNorm();
-      d2[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)] = d;
-      d2[static_cast<std::size_t>(j) * un + static_cast<std::size_t>(i)] = d;
+namespace {
+
+// Squared Ward distances between the clusters in slots i and j, initially |xi - xj|^2; a merged
+// cluster lives on in one of its two slots.
+class WardDistances {
+ public:
+  WardDistances(const Eigen::MatrixXd& points, const core::StopCondition* stop)
+      : n_(static_cast<std::size_t>(points.rows())), d2_(n_ * n_, 0.0) {
+    const int n = static_cast<int>(n_);
+    for (int i = 0; i < n; ++i) {
+      poll(stop);
+      for (int j = i + 1; j < n; ++j) {
+        const double d = (points.row(i) - points.row(j)).squaredNorm();
+        at(i, j) = d;
+        at(j, i) = d;
+      }
     }
   }
-  auto at = [&](int i, int j) -> double& { return d2[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)]; };
-  std::vector<int> size(un, 1);
-  std::vector<char> active(un, 1);
+  double& at(int i, int j) { return d2_[static_cast<std::size_t>(i) * n_ + static_cast<std::size_t>(j)]; }
+
+ private:
+  std::size_t n_;
+  std::vector<double> d2_;
+};
+
+// The active slots, each cluster's size, and the distances between them as merges go on.
+struct WardSlots {
+  WardDistances d;
+  std::vector<int> size;
+  std::vector<char> active;
+  int n;
+};
+
+// Grows the nearest-neighbour chain until its last two clusters are each other's nearest.
+void grow_chain(WardSlots& w, std::vector<int>& chain) {
+  for (;;) {
+    const int a = chain.back();
+    const int prev = chain.size() >= 2 ? chain[chain.size() - 2] : -1;
+    int b = prev;  // prefer the previous element on ties, which guarantees termination
+    double best = prev >= 0 ? w.d.at(a, prev) : std::numeric_limits<double>::infinity();
+    for (int j = 0; j < w.n; ++j) {
+      if (j == a || !w.active[static_cast<std::size_t>(j)]) continue;
+      if (w.d.at(a, j) < best) {
+        best = w.d.at(a, j);
+        b = j;
+      }
+    }
+    if (b == prev) return;
+    chain.push_back(b);
+  }
+}
+
+// Merges the clusters in slots a and b at Ward distance^2 dab.
+void merge_slots(WardSlots& w, int a, int b, double dab) {
+  // The merged cluster lives in slot lo; hi is retired. Lance-Williams update for Ward on squared
+  // distances: d(k, a+b) = ((na+nk) d(k,a) + (nb+nk) d(k,b) - nk d(a,b)) / (na+nb+nk).
+  const int lo = std::min(a, b);
+  const int hi = std::max(a, b);
+  const double na = w.size[static_cast<std::size_t>(a)];
+  const double nb = w.size[static_cast<std::size_t>(b)];
+  for (int k = 0; k < w.n; ++k) {
+    if (!w.active[static_cast<std::size_t>(k)] || k == a || k == b) continue;
+    const double nk = w.size[static_cast<std::size_t>(k)];
+    const double d = ((na + nk) * w.d.at(k, a) + (nb + nk) * w.d.at(k, b) - nk * dab) / (na + nb + nk);
+    w.d.at(k, lo) = d;
+    w.d.at(lo, k) = d;
+  }
+  w.size[static_cast<std::size_t>(lo)] += w.size[static_cast<std::size_t>(hi)];
+  w.active[static_cast<std::size_t>(hi)] = 0;
+}
+
+// The n - 1 merges in the order the nearest-neighbour chain finds them.
+std::vector<RawMerge> chain_merges(WardSlots& w, const core::StopCondition* stop) {
+  const auto un = static_cast<std::size_t>(w.n);
   std::vector<int> chain;
   chain.reserve(un);
   std::vector<RawMerge> raw;
   raw.reserve(un);
   int first_active = 0;
-  while (static_cast<int>(raw.size()) < n - 1) {
+  while (static_cast<int>(raw.size()) < w.n - 1) {
     poll(stop);  // each merge costs O(n) per chain step
     if (chain.empty()) {
-      while (!active[static_cast<std::size_t>(first_active)]) ++first_active;
+      while (!w.active[static_cast<std::size_t>(first_active)]) ++first_active;
       chain.push_back(first_active);
     }
-    // Grow the chain by nearest neighbours until two clusters are each other's nearest.
-    for (;;) {
-      const int a = chain.back();
-      const int prev = chain.size() >= 2 ? chain[chain.size() - 2] : -1;
-      int b = prev;  // prefer the previous element on ties, which guarantees termination
-      double best = prev >= 0 ? at(a, prev) : std::numeric_limits<double>::infinity();
-      for (int j = 0; j < n; ++j) {
-        if (j == a || !active[static_cast<std::size_t>(j)]) continue;
-        if (at(a, j) < best) {
-          best = at(a, j);
-          b = j;
-        }
-      }
-      if (b == prev) break;
-      chain.push_back(b);
-    }
+    grow_chain(w, chain);
     const int a = chain.back();
     chain.pop_back();
     const int b = chain.back();
     chain.pop_back();
-    const double dab = at(a, b);
+    const double dab = w.d.at(a, b);
     raw.push_back({a, b, std::sqrt(dab)});
-    // The merged cluster lives in slot lo; hi is retired. Lance-Williams update for Ward on squared
-    // distances: d(k, a+b) = ((na+nk) d(k,a) + (nb+nk) d(k,b) - nk d(a,b)) / (na+nb+nk).
-    const int lo = std::min(a, b);
-    const int hi = std::max(a, b);
-    const double na = size[static_cast<std::size_t>(a)];
-    const double nb = size[static_cast<std::size_t>(b)];
-    for (int k = 0; k < n; ++k) {
-      if (!active[static_cast<std::size_t>(k)] || k == a || k == b) continue;
-      const double nk = size[static_cast<std::size_t>(k)];
-      const double d = ((na + nk) * at(k, a) + (nb + nk) * at(k, b) - nk * dab) / (na + nb + nk);
-      at(k, lo) = d;
-      at(lo, k) = d;
-    }
-    size[static_cast<std::size_t>(lo)] += size[static_cast<std::size_t>(hi)];
-    active[static_cast<std::size_t>(hi)] = 0;
+    merge_slots(w, a, b, dab);
   }
-  // Sort by height (stable, so equal heights keep the chain's order) and name clusters as SciPy does.
+  return raw;
+}
+
+// Sorts the merges by height (stable, so equal heights keep the chain's order) and names clusters
+// as SciPy does: point i is cluster i, merge i makes cluster n + i.
+WardDendrogram scipy_dendrogram(std::vector<RawMerge> raw, int n) {
   std::stable_sort(raw.begin(), raw.end(), [](const RawMerge& x, const RawMerge& y) { return x.height < y.height; });
+  const auto un = static_cast<std::size_t>(n);
   WardDendrogram out;
   out.n = n;
   out.merges.reserve(raw.size());
@@ -153,6 +187,16 @@ WardDendrogram ward_linkage(const Eigen::MatrixXd& points, const core::StopCondi
     cluster_size[static_cast<std::size_t>(root)] = sz;
   }
   return out;
+}
+
+}  // namespace
+
+WardDendrogram ward_linkage(const Eigen::MatrixXd& points, const core::StopCondition* stop) {
+  validate_points(points, "ward");
+  const int n = static_cast<int>(points.rows());
+  const auto un = static_cast<std::size_t>(n);
+  WardSlots slots{WardDistances(points, stop), std::vector<int>(un, 1), std::vector<char>(un, 1), n};
+  return scipy_dendrogram(chain_merges(slots, stop), n);
 }
 
 void WardSettings::validate() const {

@@ -8,6 +8,7 @@
 #include "amp/core/rng.hpp"
 #include "amp/core/run_record.hpp"
 #include "amp/core/stop_condition.hpp"
+#include "amp/nav/navigator.hpp"
 #include "amp/nav/motion_controller.hpp"
 #include "amp/nav/simulator.hpp"
 
@@ -48,7 +49,9 @@ Execution execute(Simulator& sim, MotionController& controller, const MotionNois
   return out;
 }
 
-void record_execution(const Execution& e, bool stopped, core::RunRecord& r) {
+void record_execution(const Execution& e, bool stopped, NavigationOutcome& out) {
+  out.drive = DriveSummary{e.arrived, e.time_s, e.distance, e.min_clearance, e.collisions, std::nullopt};
+  core::RunRecord& r = out.record;
   r.status = e.arrived ? core::PlanStatus::kSolved : stopped ? core::PlanStatus::kTimeout : core::PlanStatus::kUnsolvable;
   r.path_length = e.distance;
   r.extra["arrived"] = e.arrived ? 1.0 : 0.0;

@@ -45,27 +45,30 @@ MethodRuns run_method(const world::Problem& problem, const std::string& method, 
     nav::NavigationOutcome out = run_navigation(problem, method, params, seed, kRunTimeLimitS);
     const core::RunRecord& r = out.record;
     if (r.status == core::PlanStatus::kError) throw Error(method + ": " + r.message);
-    const bool arrived = r.extra.at("arrived") != 0.0;
-    solved += arrived ? 1 : 0;
+    if (!out.drive) throw Error(method + ": drives to no goal (Table 2 compares policy-search and dwa)");
+    const nav::DriveSummary& d = *out.drive;
+    // Numbers as the record's extras hold them (doubles), so record.json reads as before.
+    const double contacts = static_cast<double>(d.collisions);
+    solved += d.arrived ? 1 : 0;
     planning.push_back(out.planning_time_s);
-    execution.push_back(r.extra.at("execution_time_s"));
-    distance.push_back(r.extra.at("distance"));
-    collisions += r.extra.at("collisions");
-    min_clearance = i == 0 ? r.extra.at("min_clearance") : std::min(min_clearance, r.extra.at("min_clearance"));
-    if (r.extra.contains("waypoints")) waypoints = r.extra.at("waypoints");
+    execution.push_back(d.execution_time_s);
+    distance.push_back(d.distance);
+    collisions += contacts;
+    min_clearance = i == 0 ? d.min_clearance : std::min(min_clearance, d.min_clearance);
+    if (d.waypoints) waypoints = static_cast<double>(*d.waypoints);
     m.runs.push_back({{"seed", seed},
-                      {"arrived", arrived},
+                      {"arrived", d.arrived},
                       {"planning_time_s", out.planning_time_s},
-                      {"execution_time_s", r.extra.at("execution_time_s")},
-                      {"distance", r.extra.at("distance")},
-                      {"min_clearance", r.extra.at("min_clearance")},
-                      {"collisions", r.extra.at("collisions")},
+                      {"execution_time_s", d.execution_time_s},
+                      {"distance", d.distance},
+                      {"min_clearance", d.min_clearance},
+                      {"collisions", contacts},
                       {"speeds", out.speeds}});
     if (i == 0) {  // the figures show one run, as the paper's do
       m.stages = std::move(out.stages);
       m.speeds = std::move(out.speeds);
       m.trace = std::move(out.trace);
-      m.arrived = arrived;
+      m.arrived = d.arrived;
     }
   }
   m.record = {{"method", method},

@@ -13,6 +13,7 @@ struct RunRecord;
 namespace amp::nav {
 
 class MotionController;
+struct NavigationOutcome;
 class Simulator;
 
 // Gaussian noise G on the commands a controller sends (the policy-search paper's motion noise about
@@ -41,9 +42,10 @@ struct Execution {
 Execution execute(Simulator& sim, MotionController& controller, const MotionNoise& noise, double time_limit_s,
                   core::Rng& rng, const core::StopCondition* stop = nullptr);
 
-// The flat execution metrics of a run (arrived, execution_time_s, distance, min_clearance,
-// collisions) into a record: status, path_length and extra. `stopped`: the run's stop fired, so a
-// robot that did not arrive timed out rather than failed. Shared by policy-search and dwa.
-void record_execution(const Execution& e, bool stopped, core::RunRecord& r);
+// The execution of a run into its outcome: the typed DriveSummary, and the flat metrics (arrived,
+// execution_time_s, distance, min_clearance, collisions) into the record's status, path_length and
+// extra. `stopped`: the run's stop fired, so a robot that did not arrive timed out rather than
+// failed. Shared by policy-search and dwa.
+void record_execution(const Execution& e, bool stopped, NavigationOutcome& out);
 
 }  // namespace amp::nav

@@ -24,6 +24,17 @@ struct PlanStage {
   std::optional<double> value;   // the plan's value at this stage, where the method has one
 };
 
+// How a drive to one goal went, typed (the record's extras hold the same numbers by name, for
+// `amp bench`): the studies read it here, not back from the record by key.
+struct DriveSummary {
+  bool arrived = false;
+  double execution_time_s = 0.0;  // simulated
+  double distance = 0.0;
+  double min_clearance = 0.0;
+  std::size_t collisions = 0;  // footprint contacts
+  std::optional<std::size_t> waypoints;  // the plan's, for methods that plan waypoints
+};
+
 // What one navigation run reports: the flat record `amp bench` writes (status, path_length,
 // wall_time_s, and the method's metrics in `extra`), and the robot's driven trace.
 struct NavigationOutcome {
@@ -32,6 +43,7 @@ struct NavigationOutcome {
   std::vector<double> speeds;    // per step, when the method drives a controller (the velocity profile)
   double planning_time_s = 0.0;  // measured, so outside the record (which depends on the seed alone)
   std::vector<PlanStage> stages;  // empty for methods that do not plan ahead
+  std::optional<DriveSummary> drive;  // for methods that drive to one goal (policy-search, dwa)
 };
 
 // A navigation method (PGCS exploration and queries, policy search, DWA, SINS): it drives a

@@ -49,7 +49,7 @@ NavigationOutcome DwaNavigator::run(const NavTask& task, const core::StopConditi
   out.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Simulator sim = unicycle_simulator(task, drive_);
   const Execution e = execute(sim, controller, drive_.noise(), drive_.max_time, rng, &stop);
-  record_execution(e, stop.fired(), out.record);
+  record_execution(e, stop.fired(), out);
   out.trace = e.trace;
   out.speeds = e.speeds;
   return out;

@@ -116,6 +116,7 @@ std::vector<Eigen::Vector2d> TraceCorridor::path(const Eigen::Vector2d& from, co
   if (ca == cb) return {from, to};
   const Ends e = ends(from, to, reach);
   new_search();
+  // Asked once per cell and search: `allowed` may cost a nearest-centre query.
   const std::function<bool(int)> passable = [&](int cell) {
     std::uint8_t& s = touch(cell);
     if ((s & kKnown) == 0) {
@@ -124,9 +125,14 @@ std::vector<Eigen::Vector2d> TraceCorridor::path(const Eigen::Vector2d& from, co
     }
     return (s & kPassable) != 0;
   };
+  if (!cell_path(ca, cb, passable)) return {};
+  return shortened(kept_positions(cb, from, to), passable);
+}
+
+bool TraceCorridor::cell_path(int from, int to, const std::function<bool(int)>& passable) const {
   // A* over the cells, octile steps, a diagonal only between two passable side cells.
   const double cs = geometry_.cell_size();
-  const int bx = cb % geometry_.width(), by = cb / geometry_.width();
+  const int bx = to % geometry_.width(), by = to / geometry_.width();
   const auto h = [&](int cell) {
     const double dx = std::abs(cell % geometry_.width() - bx), dy = std::abs(cell / geometry_.width() - by);
     return cs * (std::max(dx, dy) + (std::numbers::sqrt2 - 1.0) * std::min(dx, dy));
@@ -136,12 +142,11 @@ std::vector<Eigen::Vector2d> TraceCorridor::path(const Eigen::Vector2d& from, co
     heap_.emplace_back(-f, cell);
     std::push_heap(heap_.begin(), heap_.end());
   };
-  touch(ca);
-  cost_[static_cast<std::size_t>(ca)] = 0.0;
-  parent_[static_cast<std::size_t>(ca)] = -1;
-  state_[static_cast<std::size_t>(ca)] |= kReached;
-  push(h(ca), ca);
-  bool found = false;
+  touch(from);
+  cost_[static_cast<std::size_t>(from)] = 0.0;
+  parent_[static_cast<std::size_t>(from)] = -1;
+  state_[static_cast<std::size_t>(from)] |= kReached;
+  push(h(from), from);
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end());
     const int c = heap_.back().second;
@@ -149,10 +154,7 @@ std::vector<Eigen::Vector2d> TraceCorridor::path(const Eigen::Vector2d& from, co
     std::uint8_t& sc = touch(c);
     if ((sc & kClosed) != 0) continue;
     sc |= kClosed;
-    if (c == cb) {
-      found = true;
-      break;
-    }
+    if (c == to) return true;
     const int x = c % geometry_.width(), y = c / geometry_.width();
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
@@ -171,9 +173,13 @@ std::vector<Eigen::Vector2d> TraceCorridor::path(const Eigen::Vector2d& from, co
       }
     }
   }
-  if (!found) return {};
+  return false;
+}
+
+std::vector<Eigen::Vector2d> TraceCorridor::kept_positions(int to_cell, const Eigen::Vector2d& from,
+                                                           const Eigen::Vector2d& to) const {
   std::vector<int> cells;
-  for (int c = cb; c >= 0; c = parent_[static_cast<std::size_t>(c)]) cells.push_back(c);
+  for (int c = to_cell; c >= 0; c = parent_[static_cast<std::size_t>(c)]) cells.push_back(c);
   std::reverse(cells.begin(), cells.end());
   std::vector<Eigen::Vector2d> points;
   points.reserve(cells.size());
@@ -183,8 +189,13 @@ std::vector<Eigen::Vector2d> TraceCorridor::path(const Eigen::Vector2d& from, co
     points.push_back(first_[c].allFinite() ? first_[c] : geometry_.cell_center(cells[i]));
   }
   points.push_back(to);
-  // Shortening: from each kept point, on to the farthest point ahead that it sees clear.
-  std::vector<Eigen::Vector2d> out{from};
+  return points;
+}
+
+std::vector<Eigen::Vector2d> TraceCorridor::shortened(const std::vector<Eigen::Vector2d>& points,
+                                                      const std::function<bool(int)>& passable) const {
+  // From each kept point, on to the farthest point ahead that it sees clear.
+  std::vector<Eigen::Vector2d> out{points.front()};
   std::size_t i = 0;
   while (i + 1 < points.size()) {
     std::size_t next = i + 1;

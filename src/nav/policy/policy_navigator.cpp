@@ -76,8 +76,9 @@ NavigationOutcome PolicyNavigator::run(const NavTask& task, const core::StopCond
     e.trace = {sim.state().position};
     e.min_clearance = sim.footprint().clearance(sim.next_world(), sim.state().position, sim.state().heading);
   }
-  record_execution(e, stop.fired(), out.record);
+  record_execution(e, stop.fired(), out);
   out.record.nodes = plan.search.final.size();
+  out.drive->waypoints = plan.search.final.size();
   out.record.extra["waypoints"] = static_cast<double>(plan.search.final.size());
   out.record.extra["value"] = plan.search.value_final;
   out.trace = e.trace;

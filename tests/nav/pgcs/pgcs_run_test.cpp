@@ -8,6 +8,7 @@
 #include "amp/core/rng.hpp"
 #include "amp/core/stop_condition.hpp"
 #include "amp/nav/pgcs/pgcs_navigator.hpp"
+#include "nav/pgcs/exploring.hpp"
 #include "support/bundled_problems.hpp"
 
 namespace amp::nav {
@@ -15,13 +16,7 @@ namespace {
 
 using V = Eigen::Vector2d;
 
-PgcsRunSettings small_run(long steps, int queries) {
-  PgcsRunSettings run;
-  run.steps = steps;
-  run.queries = queries;
-  run.curve_points = 10;
-  return run;
-}
+PgcsRunSettings small_run(long steps, int queries) { return pgcs_test::short_run(steps, queries); }
 
 TEST(PgcsRun, TheNavigatorIsTheSameLoop) {
   // `pgcs` in amp bench and amp explore share run_pgcs: with the seed the navigator draws, the

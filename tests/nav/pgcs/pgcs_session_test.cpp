@@ -7,6 +7,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/nav/polygon_nav_world.hpp"
+#include "nav/pgcs/exploring.hpp"
 #include "support/bundled_problems.hpp"
 
 namespace amp::nav {
@@ -14,13 +15,7 @@ namespace {
 
 using V = Eigen::Vector2d;
 
-PgcsRunSettings small_run(long steps, int queries) {
-  PgcsRunSettings run;
-  run.steps = steps;
-  run.queries = queries;
-  run.curve_points = 10;
-  return run;
-}
+PgcsRunSettings small_run(long steps, int queries) { return pgcs_test::short_run(steps, queries); }
 
 learn::PgcsSettings small_pgcs() {
   learn::PgcsSettings p;

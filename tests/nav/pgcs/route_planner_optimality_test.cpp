@@ -1,7 +1,7 @@
-// RoutePlanner's search prunes dominated arrivals and reuses a graph's neighbours across plans with
-// one graph_key: on random graphs, its route costs what an independent Dijkstra over (previous
-// node, node) states finds optimal, and a plan with a kept graph equals the plan made afresh, also
-// after the remembered illegal edges changed between them.
+// RoutePlanner's search prunes dominated arrivals, and a RouteGraph keeps its nodes' neighbours
+// across plans while it stands still: on random graphs, its route costs what an independent
+// Dijkstra over (previous node, node) states finds optimal, and a plan on a kept graph equals the
+// plan on a new one, also after the remembered illegal edges changed between them.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,7 +36,18 @@ struct RandomGraph {
 };
 
 // Verified: a fixed pseudo-random half of the pairs.
-bool verified(int a, int b) { return ((std::min(a, b) * 31 + std::max(a, b) * 17) % 2) == 0; }
+bool half_verified(int a, int b) { return ((std::min(a, b) * 31 + std::max(a, b) * 17) % 2) == 0; }
+
+// The centres' Delaunay graph with the verified half above.
+class HalfVerifiedGraph final : public RouteGraph {
+ public:
+  using RouteGraph::RouteGraph;
+
+ protected:
+  Eigen::Vector2d point(int k) const override { return clusters().mean(k); }
+  bool verified(int a, int b) const override { return half_verified(a, b); }
+  void more_neighbours(int, std::vector<int>&) const override {}
+};
 
 double heading(const V& from, const V& to) { return std::atan2(to.y() - from.y(), to.x() - from.x()); }
 double turn(double a, double b) {
@@ -71,7 +82,7 @@ double brute_force(const RandomGraph& w, const RouteSettings& s, const EdgeMemor
     w.g.triangulation().neighbours(v, n);
     for (int k : n) {
       if (memory.illegal(v, k, w.g.mean(v), w.g.mean(k))) continue;
-      out.emplace_back(k, verified(v, k) ? 1.0 : 1.0 + s.unverified_weight);
+      out.emplace_back(k, half_verified(v, k) ? 1.0 : 1.0 + s.unverified_weight);
     }
     if (std::find(to_target.begin(), to_target.end(), v) != to_target.end()) out.emplace_back(-2, 1.0);
     return out;
@@ -100,7 +111,8 @@ TEST(RoutePlannerOptimality, RouteCostsWhatDijkstraOverTurnStatesFinds) {
     core::Rng rng(seed + 100);
     const RouteSettings s{rng.uniform(0.0, 3.0), rng.uniform(0.0, 2.0), 2, rng.uniform(0.0, 2.0), 100.0};
     EdgeMemory memory(0.01);
-    const Route r = RoutePlanner(s).plan(w.g, memory, w.start, w.target, {}, 0.01, verified);
+    HalfVerifiedGraph graph(w.g, memory);
+    const Route r = RoutePlanner(s).plan(graph, w.start, w.target);
     const double best = brute_force(w, s, memory);
     ASSERT_FALSE(r.empty()) << "seed " << seed;
     EXPECT_NEAR(r.cost, best, 1e-9 * std::max(1.0, best)) << "seed " << seed;
@@ -113,9 +125,11 @@ TEST(RoutePlannerOptimality, KeptGraphPlansEqualFreshOnesAsEdgesTurnIllegal) {
     const RouteSettings s{1.0, 1.0, 2, 1.0, 100.0};
     RoutePlanner kept(s);
     EdgeMemory memory(0.01);
+    HalfVerifiedGraph kept_graph(w.g, memory);
     for (int round = 0; round < 4; ++round) {
-      const Route a = kept.plan(w.g, memory, w.start, w.target, {}, 0.01, verified, {}, -1, {}, nullptr, 7);
-      const Route b = RoutePlanner(s).plan(w.g, memory, w.start, w.target, {}, 0.01, verified);
+      const Route a = kept.plan(kept_graph, w.start, w.target);
+      HalfVerifiedGraph fresh_graph(w.g, memory);
+      const Route b = RoutePlanner(s).plan(fresh_graph, w.start, w.target);
       ASSERT_EQ(a.nodes, b.nodes) << "seed " << seed << " round " << round;
       EXPECT_DOUBLE_EQ(a.cost, b.cost);
       EXPECT_NEAR(a.cost, brute_force(w, s, memory), 1e-9 * std::max(1.0, a.cost));

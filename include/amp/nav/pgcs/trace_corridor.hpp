@@ -70,6 +70,13 @@ class TraceCorridor {
   std::uint8_t& touch(int cell) const;
   // Whether every cell within one cell of segment a-b is passable.
   bool clear(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::function<bool(int)>& passable) const;
+  // path()'s steps: the octile-shortest passable cell path from cell `from` to cell `to` (parent_
+  // leads back from `to`), false when there is none; the cells' kept positions between the ends;
+  // those positions shortened to the farthest each sees clear.
+  bool cell_path(int from, int to, const std::function<bool(int)>& passable) const;
+  std::vector<Eigen::Vector2d> kept_positions(int to_cell, const Eigen::Vector2d& from, const Eigen::Vector2d& to) const;
+  std::vector<Eigen::Vector2d> shortened(const std::vector<Eigen::Vector2d>& points,
+                                         const std::function<bool(int)>& passable) const;
 
   FreeMask geometry_;
   std::vector<Eigen::Vector2d> first_;  // per cell; NaN: not visited
