@@ -5,6 +5,7 @@
 #include <set>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 
 namespace amp::bench {
 
@@ -22,12 +23,6 @@ std::vector<std::string> drawn_names(const Experiment& e) {
     for (const auto& [k, v] : c.draws) names.insert(k);
   }
   return {names.begin(), names.end()};
-}
-
-std::string number(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back exactly
-  return std::string(buf, r.ptr);
 }
 
 std::string quoted(const std::string& s) {
@@ -118,19 +113,19 @@ void RunsCsvWriter::add(const Trial& t) {
   put(std::to_string(t.id.run));
   put(std::to_string(t.seed));
   put(std::string(core::to_string(r.status)));
-  put(number(r.wall_time_s));
+  put(core::number_text(r.wall_time_s));
   for (std::uint64_t v : {r.cd_calls(), r.cd_calls_training, r.cd_calls_planning, r.cd_calls_query, r.clearance_calls,
                           r.nodes, r.edges, r.components, r.lp_calls, r.lp_successes, r.path_states}) {
     put(std::to_string(v));
   }
-  put(number(r.path_length));
-  put(number(r.path_clearance));
+  put(core::number_text(r.path_length));
+  put(core::number_text(r.path_clearance));
   for (const auto& n : drawn_names_) {
     const auto it = t.drawn.find(n);
     put(it == t.drawn.end() ? "" : it->second);
   }
   std::string extra;
-  for (const auto& [k, v] : r.extra) extra += (extra.empty() ? "" : ";") + k + "=" + number(v);
+  for (const auto& [k, v] : r.extra) extra += (extra.empty() ? "" : ";") + k + "=" + core::number_text(v);
   put(extra);
   put(r.message);
   row += '\n';

@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 #include "bench/ompl/ompl_properties.hpp"
 
 namespace amp::bench {
@@ -207,10 +208,10 @@ void OmplLogWriter::write_log(std::size_t problem, double total_time_s, bool wit
   out << "<<<|\n" << ompl::setup_text(e.problems[problem]) << "|>>>\n";
   out << "<<<|\n" << ompl::block_text(info_.cpu_info) << "|>>>\n";
   out << e.seed << " is the random seed\n";
-  out << ompl::number_text(e.time_limit_s) << " seconds per run\n";
+  out << core::number_text(e.time_limit_s) << " seconds per run\n";
   out << "0 MB per run\n";
   out << e.runs << " runs per planner\n";
-  out << ompl::number_text(total_time_s) << " seconds spent to collect the data\n";
+  out << core::number_text(total_time_s) << " seconds spent to collect the data\n";
   out << "1 enum type\nstatus";
   for (const auto& name : ompl::kStatusNames) out << '|' << name;
   out << '\n' << e.planners.size() << " planners\n";

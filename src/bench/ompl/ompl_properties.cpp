@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "amp/core/error.hpp"
+#include "amp/core/number_text.hpp"
 
 namespace amp::bench::ompl {
 
@@ -80,14 +81,8 @@ std::string column_name(const Property& p) {
 
 std::string log_key(const Property& p) { return p.words + " " + std::string(to_string(p.type)); }
 
-std::string number_text(double x) {
-  char buf[32];
-  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  return ec == std::errc() ? std::string(buf, ptr) : std::string();
-}
-
 std::string log_value(const SqlValue& v) {
-  if (const auto* d = std::get_if<double>(&v)) return std::isfinite(*d) ? number_text(*d) : std::string();
+  if (const auto* d = std::get_if<double>(&v)) return std::isfinite(*d) ? core::number_text(*d) : std::string();
   if (const auto* i = std::get_if<std::int64_t>(&v)) return std::to_string(*i);
   if (const auto* s = std::get_if<std::string>(&v)) return field_text(*s);
   return {};

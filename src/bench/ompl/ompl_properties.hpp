@@ -69,7 +69,5 @@ std::pair<std::string, std::string> version_words(const RunInfo& info);
 std::string block_text(std::string_view s);
 // Text made safe for a one-line log field: no control characters, no ';'.
 std::string field_text(std::string_view s);
-// Shortest text that reads back as the same double.
-std::string number_text(double x);
 
 }  // namespace amp::bench::ompl
