@@ -1,4 +1,5 @@
-// `amp plan` and `amp render` output files (refused overwrites, bad destinations) and the JSON record.
+// `amp plan` and `amp render` output files (refused overwrites, bad destinations) and the JSON record;
+// the studies' output folders.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -58,6 +59,25 @@ TEST_F(CliErrors, SvgIntoMissingDirectory) {
   const RunResult r = run("plan " + data("ok.yaml") + " --out out.path --svg no_such_dir/out.svg");
   expect_input_error(r, {"--svg", "no_such_dir", "does not exist"});
   EXPECT_FALSE(fs::exists(dir_ / "no_such_dir"));
+}
+
+// The three studies check their output folder the same way (study::check_output_dir), before any
+// work: a missing parent, a file in the folder's place, an output file that exists without --force.
+TEST_F(CliErrors, StudiesRefuseTheirOutputFolderTheSameWay) {
+  const std::string problems = std::string(AMP_SOURCE_DIR) + "/problems/";
+  const std::vector<std::string> commands = {"explore " + problems + "office-map.yaml --steps 100 --queries 0",
+                                             "navigate " + problems + "policy-lab.yaml --runs 1",
+                                             "sins --worlds 1"};
+  std::ofstream(dir_ / "a_file") << "x";
+  fs::create_directory(dir_ / "full");
+  std::ofstream(dir_ / "full" / "record.json") << "{}";
+  for (const std::string& c : commands) {
+    expect_input_error(run(c + " -o no_such_dir/out"), {"-o", "directory 'no_such_dir' does not exist"});
+    expect_input_error(run(c + " -o a_file"), {"-o", "'a_file' is a file, expected a directory"});
+    expect_input_error(run(c + " -o full"), {"-o", "record.json", "already exists", "--force"});
+    EXPECT_FALSE(fs::exists(dir_ / "no_such_dir"));
+    EXPECT_EQ(read_file(dir_ / "full" / "record.json"), "{}");
+  }
 }
 
 TEST_F(CliErrors, SvgAndOutNameTheSameFile) {
