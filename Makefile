@@ -57,7 +57,8 @@ bench: build
 # `make sanitize` runs every test but the MPI one, whose leak reports come from inside Open MPI, the
 # SINS calibration's full probe test (about 160 s here; `make test` runs it, and its code runs here
 # through the calibration's three other tests), and the wall-clock `timing` label, the `arms` label
-# (it skips itself there) and `slow`. The sphere model's
+# (it skips itself there), `slow` and `browser` (the 3-D viewer in Chromium: JavaScript, whose
+# C++ side runs here through tests/viz/viewer_page_test.cpp). The sphere model's
 # tests share one generated cover per build (tests/support/sphere_test_cache.hpp), so they run here too.
 sanitize-build: DEPS_FLAGS = --sanitize
 sanitize-build: deps
@@ -67,7 +68,7 @@ sanitize-build: deps
 
 sanitize: sanitize-build
 	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --output-on-failure -j$(JOBS) -LE '^(timing|arms|slow)$$' -E '^(apps[.]mpi_bench_equals_single_process|SinsCalibration[.]ProbesAndCheckEqualIndependentRuns)$$'
+	  ctest --output-on-failure -j$(JOBS) -LE '^(timing|arms|slow|browser)$$' -E '^(apps[.]mpi_bench_equals_single_process|SinsCalibration[.]ProbesAndCheckEqualIndependentRuns)$$'
 
 # Every libFuzzer target (tests/fuzz) for FUZZ_SECONDS each, FUZZ_JOBS at a time; FUZZ_RUNS bounds
 # the executions instead (scripts/fuzz.sh).

@@ -23,6 +23,7 @@
 #include "amp/study/navigate_study.hpp"
 #include "amp/study/navigation_run.hpp"
 #include "amp/study/sins_study.hpp"
+#include "amp/viz/viewer_page.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "amp/world/problem.hpp"
 
@@ -75,6 +76,24 @@ py::tuple plan(const amp::world::Problem& problem, const std::string& planner, s
   std::vector<std::vector<double>> path;
   for (const amp::State& s : run.path) path.push_back(as_vector(s));
   return py::make_tuple(to_dict(run.record), states(path));
+}
+
+// `amp view` from Python: the 3-D viewer page of a problem and a path (checked, as the command
+// checks a path file), as HTML text, e.g. for IPython.display.HTML or a file.
+std::string viewer_page(const amp::world::Problem& problem, const std::vector<std::vector<double>>& path,
+                        const std::string& title, const std::string& subtitle) {
+  std::vector<amp::State> states_of_path;
+  for (const std::vector<double>& row : path) {
+    if (static_cast<int>(row.size()) != problem.space->dimension()) {
+      throw amp::Error("path: a state has " + std::to_string(row.size()) + " values, the problem's space " +
+                       std::to_string(problem.space->dimension()));
+    }
+    states_of_path.push_back(Eigen::Map<const Eigen::VectorXd>(row.data(), static_cast<Eigen::Index>(row.size())));
+  }
+  amp::viz::ViewerContent content = amp::viz::path_content(problem, std::move(states_of_path), subtitle);
+  content.title = title;
+  py::gil_scoped_release free;
+  return amp::viz::viewer_page(problem, content);
 }
 
 // A JSON document as Python objects (what `json.loads` makes of it).
@@ -256,6 +275,10 @@ PYBIND11_MODULE(amp, m) {
         "max_cases, ...)");
   m.def("bench", &bench, py::arg("experiment"), py::arg("out"), py::arg("threads") = 0, py::arg("force") = false,
         "Runs an experiment file as `amp bench` does; returns the run count and summary.json as a dict");
+  m.def("viewer_page", &viewer_page, py::arg("problem"), py::arg("path") = std::vector<std::vector<double>>{},
+        py::arg("title") = "", py::arg("subtitle") = "",
+        "`amp view`: the interactive 3-D page (HTML text) of a problem with the robot playing `path` (states as rows; "
+        "empty: the robot at the start); the page says whether the path is certified collision-free");
   m.def("planners", [] { return amp::roadmap::builtin_planners().names(); }, "The planners' names");
   m.def("navigation_methods", [] { return amp::nav::builtin_navigators().names(); }, "The navigation methods' names");
 }

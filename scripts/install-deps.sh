@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages AMP builds with, only those not yet installed.
-# --test adds the packages only the test suite needs (OMPL, the oracle of tests/oracle; pytest);
+# --test adds the packages only the test suite needs (OMPL, the oracle of tests/oracle; pytest;
+# Chromium, which opens the 3-D viewer's pages headless);
 # --sanitize those of the sanitizer and fuzzing build (clang 14 and its libFuzzer runtime).
 set -euo pipefail
 with_test=0
@@ -20,9 +21,10 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
   liburdfdom-dev liborocos-kdl-dev libtinyxml2-dev
+  libjs-three
 )
 if [ "$with_test" -eq 1 ]; then
-  packages+=(libompl-dev python3-pytest)
+  packages+=(libompl-dev python3-pytest chromium)
 fi
 if [ "$with_sanitize" -eq 1 ]; then
   packages+=(clang-14 libclang-rt-14-dev llvm-14)

@@ -7,6 +7,7 @@ namespace amp::cli {
 // returns the process exit code; errors are thrown as amp::Error and printed by main().
 void add_plan_command(CLI::App& app, int& exit_code);
 void add_render_command(CLI::App& app, int& exit_code);
+void add_view_command(CLI::App& app, int& exit_code);
 void add_demo_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);  // also `amp merge`
 void add_regions_command(CLI::App& app, int& exit_code);

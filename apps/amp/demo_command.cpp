@@ -14,6 +14,7 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/roadmap/uas/uas_regions.hpp"
 #include "amp/viz/scene_renderer.hpp"
+#include "amp/viz/viewer_page.hpp"
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
 #include "amp/study/explore_study.hpp"
@@ -139,9 +140,16 @@ int run_demo(const DemoOptions& o) {
       scene.roadmap = &drawing;
     }
     viz::write_text_file((out / (stem + ".svg")).string(), viz::render_scene(problem, scene));
+    // A 3-D problem seen from above says little: its page shows it in 3-D, the robot playing the path.
+    if (problem.environment->workspace_dimension() == 3) {
+      const viz::ViewerContent content = viz::path_content(
+          problem, solved ? run.path : std::vector<State>{}, problem.defaults.planner + ", seed " + std::to_string(o.seed));
+      viz::write_text_file((out / (stem + ".html")).string(), viz::viewer_page(problem, content));
+    }
   }
-  std::printf("\n%d of %zu problems solved; open %s/*.svg in a browser.\n",
-              static_cast<int>(std::size(kDemoProblems)) - failures, std::size(kDemoProblems), out.string().c_str());
+  std::printf("\n%d of %zu problems solved; open %s/*.svg in a browser (3-D problems: %s/*.html).\n",
+              static_cast<int>(std::size(kDemoProblems)) - failures, std::size(kDemoProblems), out.string().c_str(),
+              out.string().c_str());
 
   // The benchmark harness on a reduced experiment: run-cost statistics, database and report.
   run_demo_bench(dir / "experiments" / "quick.yaml", out / "bench", o.bench_runs);

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   int exit_code = amp::cli::kExitOk;
   amp::cli::add_plan_command(app, exit_code);
   amp::cli::add_render_command(app, exit_code);
+  amp::cli::add_view_command(app, exit_code);
   amp::cli::add_regions_command(app, exit_code);
   amp::cli::add_explore_command(app, exit_code);
   amp::cli::add_navigate_command(app, exit_code);

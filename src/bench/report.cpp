@@ -35,6 +35,7 @@ report_page::RunData read_runs(const Experiment& e, const std::filesystem::path&
   report_page::RunData d;
   d.cost.assign(e.problems.size(), std::vector<std::vector<double>>(e.planners.size()));
   d.first_solved.assign(e.problems.size(), std::nullopt);
+  d.first_run_solved.assign(e.problems.size(), std::vector<std::optional<std::size_t>>(e.planners.size()));
   d.found = std::filesystem::is_regular_file(csv);
   if (!d.found) return d;
   for_each_trial(csv, e, [&](const Trial& t) {
@@ -42,6 +43,10 @@ report_page::RunData read_runs(const Experiment& e, const std::filesystem::path&
     if (s.kind == MetricSample::Kind::kValue) d.cost[t.id.problem][t.id.planner].push_back(s.value);
     if (t.record.status == core::PlanStatus::kSolved && !world_sequence(t.record) && !d.first_solved[t.id.problem]) {
       d.first_solved[t.id.problem] = t.id.index;
+    }
+    if (t.id.run == 0 && t.record.status == core::PlanStatus::kSolved && !world_sequence(t.record) &&
+        e.planners[t.id.planner].kind == MethodKind::kPlanner) {
+      d.first_run_solved[t.id.problem][t.id.planner] = t.id.index;
     }
   });
   return d;
@@ -162,7 +167,7 @@ void write_report(const Experiment& e, const Json& summary, const RunInfo& info,
         << scene_figure(e, p, runs, pj) << "<div class=\"findings\"><h3>Findings</h3><ul>\n";
     const text::CostStyle style = text::cost_style(e.cost, e.cost_direction);
     for (const auto& f : text::findings(pj, style)) out << "<li>" << f << "</li>\n";
-    out << "</ul></div>\n</div>\n";
+    out << "</ul>" << report_page::viewer_links(e, p, runs, dir) << "</div>\n</div>\n";
     report_page::cost_table(out, e, pj);
     report_page::phase_table(out, pj);
     report_page::metrics_table(out, pj);

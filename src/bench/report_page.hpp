@@ -18,6 +18,9 @@ namespace amp::bench::report_page {
 struct RunData {
   std::vector<std::vector<std::vector<double>>> cost;
   std::vector<std::optional<std::size_t>> first_solved;
+  // first_run_solved[problem][planner]: the trial index of the row's first run (run 0, the first
+  // seed) when it solved with a path (a planner, not a navigation method or a sequence of worlds).
+  std::vector<std::vector<std::optional<std::size_t>>> first_run_solved;
   bool found = false;  // runs.csv exists (the report can be written from summary.json alone)
 };
 
@@ -43,5 +46,11 @@ void phase_table(std::ostream& out, const nlohmann::json& problem);
 // log scale when the costs span more than kLogSpan.
 void charts(std::ostream& out, const Experiment& e, const std::vector<std::vector<double>>& cost);
 inline constexpr double kLogSpan = 30.0;
+
+// For a 3-D problem: each row's first run, when it solved, re-run from its seed and written as a
+// 3-D viewer page into dir/viewer/ (viz::viewer_page); returns the paragraph linking the pages
+// (empty for a 2-D problem or when no row's first run solved).
+std::string viewer_links(const Experiment& e, std::size_t problem, const RunData& runs,
+                         const std::filesystem::path& dir);
 
 }  // namespace amp::bench::report_page

@@ -11,6 +11,7 @@
 #include "amp/core/joint_space.hpp"
 #include "amp/world/environment.hpp"
 #include "amp/world/problem.hpp"
+#include "amp/world/solid_mesh.hpp"
 
 namespace amp::roadmap::test {
 
@@ -108,6 +109,40 @@ class BoxEnvironment final : public world::Environment {
   }
   world::Outline obstacle_outline() const override { return {}; }
   world::Shapes2d robot_outline(const State&) const override { return {}; }
+  // The boxes and the robot raised as every 2-D world is (flat_heights); the point as a small disc,
+  // the arm's links as thin bars from their joints along +x.
+  world::SceneModel scene_model() const override {
+    const Eigen::AlignedBox2d extent(Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 10));
+    const world::FlatHeights h = world::flat_heights(extent);
+    world::SceneModel model;
+    model.flat = true;
+    model.bounds = world::flat_bounds(extent, h);
+    for (const Box& b : boxes_) {
+      world::Polygon p{{{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}}};
+      model.obstacles.push_back(world::extrude_shapes({{p}, {}}, 0.0, h.obstacles, h.wall_thickness));
+    }
+    if (kind_ == RobotKind::kPoint) {
+      const world::Circle point{Eigen::Vector2d::Zero(), 0.0};
+      model.robot_links.push_back(world::extrude_shapes({{}, {point}}, 0.0, h.robot, h.wall_thickness));
+      model.link_names = {"body"};
+      return model;
+    }
+    const world::Segment bar{Eigen::Vector2d::Zero(), Eigen::Vector2d(kArmLink, 0.0)};
+    for (const char* name : {"link 0", "link 1"}) {
+      model.robot_links.push_back(world::extrude_shapes({{}, {}, {bar}}, 0.0, h.robot, h.wall_thickness));
+      model.link_names.emplace_back(name);
+    }
+    return model;
+  }
+  void robot_link_poses(const State& s, std::vector<Eigen::Isometry3d>& out) const override {
+    if (kind_ == RobotKind::kPoint) {
+      out = {world::lift_pose({s[0], s[1], 0.0})};
+      return;
+    }
+    const Eigen::Vector2d elbow = kArmBase + kArmLink * Eigen::Vector2d(std::cos(s[0]), std::sin(s[0]));
+    out = {world::lift_pose({kArmBase.x(), kArmBase.y(), s[0]}),
+           world::lift_pose({elbow.x(), elbow.y(), s[0] + s[1]})};
+  }
   Eigen::Vector3d reference_point(const State& s) const override {
     robot_points(kind_, s, points_);
     return Eigen::Vector3d(points_.back().x(), points_.back().y(), 0.0);

@@ -101,6 +101,9 @@ class ArmEnvironment final : public Environment {
   bool has_front_view() const override { return true; }
   Outline obstacle_front_outline() const override;
   Shapes2d robot_front_outline(const State& s) const override;
+  // The scene's solids one mesh each; every model link (not only the group's) by its URDF name.
+  SceneModel scene_model() const override;
+  void robot_link_poses(const State& s, std::vector<Eigen::Isometry3d>& out) const override;
   Eigen::Vector3d reference_point(const State& s) const override { return robot_->kinematics().tip_position(s); }
   double robot_min_diameter() const override { return robot_->min_diameter(); }
   double robot_radius() const override { return robot_->reach(); }

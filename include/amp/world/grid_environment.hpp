@@ -81,6 +81,10 @@ class GridEnvironment final : public Environment {
   Eigen::AlignedBox3d workspace_bounds() const override;
   Outline obstacle_outline() const override;
   Shapes2d robot_outline(const State& s) const override;
+  // Blocked cells (unknown ones too, as the checkers take them) as boxes, merged into rectangles,
+  // in one mesh; the robot ("body") as its disc, a half-cell disc for a point, or its shapes.
+  SceneModel scene_model() const override;
+  void robot_link_poses(const State& s, std::vector<Eigen::Isometry3d>& out) const override;
   Eigen::Vector3d reference_point(const State& s) const override;
   double robot_min_diameter() const override { return min_diameter_; }
   double robot_radius() const override { return radius_; }

@@ -24,6 +24,10 @@ class PlanarEnvironment final : public Environment {
   Eigen::AlignedBox3d workspace_bounds() const override;
   Outline obstacle_outline() const override;
   Shapes2d robot_outline(const State& s) const override { return robot_.outline(s); }
+  // Obstacles and links extruded upward (flat_heights of the bounds); links "body" for a rigid or
+  // translating robot, "link 0", "link 1", ... for arms and linkages.
+  SceneModel scene_model() const override;
+  void robot_link_poses(const State& s, std::vector<Eigen::Isometry3d>& out) const override;
   // Link-0 origin for rigid and translating robots, the end of the last link for arms; z = 0.
   Eigen::Vector3d reference_point(const State& s) const override;
   double robot_min_diameter() const override { return robot_.min_diameter(); }

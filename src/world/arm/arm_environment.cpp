@@ -1,6 +1,7 @@
 #include "amp/world/arm_environment.hpp"
 
 #include "amp/core/error.hpp"
+#include "amp/world/solid_mesh.hpp"
 #include "world/arm/arm_checker.hpp"
 #include "world/arm/sphere_checker.hpp"
 #include "world/arm/sphere_kernels.hpp"
@@ -69,6 +70,24 @@ Shapes2d ArmEnvironment::robot_seen_from(const Eigen::Isometry3d& view, const St
     for (const Solid& solid : robot_->model().links()[l].collision) detail::project_solid(solid, view * poses[l], false, out);
   }
   return out;
+}
+
+SceneModel ArmEnvironment::scene_model() const {
+  SceneModel model;
+  for (const Solid& s : scene_->obstacles()) model.obstacles.push_back(solid_mesh(s));
+  for (const ArmLink& link : robot_->model().links()) {
+    TriangleMesh mesh;
+    for (const Solid& s : link.collision) append_mesh(mesh, solid_mesh(s));
+    model.robot_links.push_back(std::move(mesh));
+    model.link_names.push_back(link.name);
+  }
+  model.bounds = scene_->bounds();
+  return model;
+}
+
+void ArmEnvironment::robot_link_poses(const State& s, std::vector<Eigen::Isometry3d>& out) const {
+  out.resize(robot_->kinematics().link_count());
+  robot_->kinematics().link_poses(s, out.data());
 }
 
 Outline ArmEnvironment::obstacle_outline() const { return obstacles_seen_from(Eigen::Isometry3d::Identity()); }

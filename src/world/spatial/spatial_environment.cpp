@@ -1,7 +1,10 @@
 #include "amp/world/spatial_environment.hpp"
 
 #include <array>
+#include <string>
+#include <vector>
 
+#include "amp/world/solid_mesh.hpp"
 #include "world/spatial/projection.hpp"
 
 namespace amp::world {
@@ -31,6 +34,41 @@ Shapes2d SpatialEnvironment::robot_seen_from(const Eigen::Isometry3d& view, cons
     }
   }
   return out;
+}
+
+namespace {
+
+// The viewer's names of the links, in SpatialRobot's link order (its header lists them).
+std::vector<std::string> link_names(const SpatialRobot& robot) {
+  switch (robot.kind()) {
+    case SpatialRobot::Kind::kRigid:
+      return {"body"};
+    case SpatialRobot::Kind::kSphere:
+      return {"sphere"};
+    case SpatialRobot::Kind::kScara:
+      break;
+  }
+  return {"column", "upper arm", "forearm", "wrist", "tool"};
+}
+
+}  // namespace
+
+SceneModel SpatialEnvironment::scene_model() const {
+  SceneModel model;
+  for (const Solid& s : world_->obstacles()) model.obstacles.push_back(solid_mesh(s));
+  for (int l = 0; l < robot_.link_count(); ++l) {
+    TriangleMesh link;
+    for (const Solid& s : robot_.link_solids(l)) append_mesh(link, solid_mesh(s));
+    model.robot_links.push_back(std::move(link));
+  }
+  model.link_names = link_names(robot_);
+  model.bounds = world_->bounds();
+  return model;
+}
+
+void SpatialEnvironment::robot_link_poses(const State& s, std::vector<Eigen::Isometry3d>& out) const {
+  out.resize(static_cast<std::size_t>(robot_.link_count()));
+  robot_.link_poses(s, out.data());
 }
 
 Outline SpatialEnvironment::obstacle_outline() const { return obstacles_seen_from(Eigen::Isometry3d::Identity()); }
