@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -122,6 +123,36 @@ TEST_F(ReportTest, BenchRunWritesASelfContainedReport) {
   EXPECT_NE(html.find("REGWQ"), std::string::npos);
   EXPECT_NE(html.find("has the lowest coefficient of variation"), std::string::npos);
   EXPECT_EQ(html.find("Cost by phase"), std::string::npos) << "no planner trains: no phase table";
+}
+
+// A 3-D problem's rows link their first run (the first seed) in the 3-D viewer, a page written
+// beside the report from a re-run of that seed; a 2-D problem gets none.
+TEST_F(ReportTest, ThreeDRowsLinkTheirFirstRunInTheViewer) {
+  Experiment e = walls_experiment({"prm-k10", "prm-k20"});
+  e.runs = 2;
+  auto walls3d = std::make_shared<world::Problem>(world::load_problem(fs::path(AMP_SOURCE_DIR) / "problems/walls3d.yaml"));
+  e.problems.push_back({walls3d->name, walls3d->file, walls3d, {}});
+  BenchOptions o;
+  o.out_dir = dir_ / "out";
+  o.threads = 2;
+  ASSERT_EQ(run_experiment(e, o).written, 8u);
+  const std::string html = page_in(o.out_dir);
+  expect_self_contained(html);
+  std::vector<fs::path> pages;
+  for (const auto& entry : fs::directory_iterator(o.out_dir / "viewer")) pages.push_back(entry.path().filename());
+  std::sort(pages.begin(), pages.end());
+  ASSERT_EQ(pages, (std::vector<fs::path>{"p1-Walls-3D-0-prm-k10.html", "p1-Walls-3D-1-prm-k20.html"}));
+  for (const fs::path& page : pages) EXPECT_EQ(count_of(html, "href=\"viewer/" + page.string() + "\""), 1u) << page;
+  std::ifstream in(o.out_dir / "viewer" / pages[0]);
+  std::stringstream viewer;
+  viewer << in.rdbuf();
+  std::uint64_t seed = 0;
+  for (std::size_t i = 0; i < e.trial_count(); ++i) {
+    const TrialId id = trial_id(e, i);
+    if (id.problem == 1 && id.planner == 0 && id.run == 0) seed = trial_seed(e, id);
+  }
+  EXPECT_NE(viewer.str().find("prm-k10, run 0, seed " + std::to_string(seed)), std::string::npos);
+  EXPECT_NE(viewer.str().find("certified collision-free along its whole length"), std::string::npos);
 }
 
 TEST_F(ReportTest, ALearnerGetsTheCostByPhaseTable) {
