@@ -104,9 +104,7 @@ int run_plan(const PlanOptions& o) {
 void add_plan_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<PlanOptions>();
   CLI::App* cmd = app.add_subcommand("plan", "Solve one problem with one planner; print the run record");
-  cmd->add_option("problem", o->problem,
-                  "Problem file (.yaml or OMPL.app .cfg), or a ROS map_server YAML with --start and --goal (or, "
-                  "for an arm, none: --urdf, --srdf, --scene, --request)");
+  add_problem_argument(cmd, o->problem);
   cmd->add_option("--planner", o->planner, "Planner name (default: the problem's, else prm)");
   cmd->add_option("--param", o->params, "Planner parameter name=value (repeatable), e.g. --param k=15");
   cmd->add_option("--seed", o->seed, "Random seed [1]")->check(unsigned_integer());

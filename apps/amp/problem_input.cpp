@@ -14,6 +14,12 @@ void add_map_query_options(CLI::App* cmd, MapQuery& q) {
       ->check(CLI::PositiveNumber.description(""));
 }
 
+void add_problem_argument(CLI::App* cmd, std::string& problem) {
+  cmd->add_option("problem", problem,
+                  "Problem file (.yaml or OMPL.app .cfg), or a ROS map_server YAML with --start and --goal (or, "
+                  "for an arm, none: --urdf, --srdf, --scene, --request)");
+}
+
 void add_arm_options(CLI::App* cmd, ArmInput& a) {
   cmd->add_option("--urdf", a.urdf, "An arm: its URDF (with --srdf, --scene and --request, instead of a problem file)");
   cmd->add_option("--srdf", a.srdf, "An arm: its SRDF (the planning group, disabled collision pairs)");

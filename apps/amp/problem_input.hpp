@@ -27,6 +27,10 @@ struct ArmInput {
   bool given() const { return !urdf.empty() || !srdf.empty() || !scene.empty() || !request.empty(); }
 };
 
+// The PROBLEM argument of a command that also takes an arm's four files or a map with a query
+// (`amp plan`, `amp view`): one help text for both.
+void add_problem_argument(CLI::App* cmd, std::string& problem);
+
 // --urdf, --srdf, --scene, --request, --package-path, --collision and --spheres on `cmd`.
 void add_arm_options(CLI::App* cmd, ArmInput& a);
 

@@ -67,9 +67,7 @@ int run_view(const ViewOptions& o) {
 void add_view_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand("view", "Write an interactive 3-D page of a problem and a path (HTML)");
-  cmd->add_option("problem", o->problem,
-                  "Problem file (.yaml or OMPL.app .cfg), or a ROS map_server YAML with --start and --goal (or, "
-                  "for an arm, none: --urdf, --srdf, --scene, --request)");
+  add_problem_argument(cmd, o->problem);
   cmd->add_option("--path", o->path, "Path file to play (as written by amp plan --out)");
   cmd->add_flag("--roadmap", o->roadmap, "Plan with --planner/--seed and draw the roadmap (and its path)");
   cmd->add_option("--planner", o->planner, "Planner for --roadmap (default: the problem's)");

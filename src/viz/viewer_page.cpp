@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
 #include "amp/core/error.hpp"
-#include "amp/core/number_text.hpp"
 #include "amp/roadmap/path_certificate.hpp"
 #include "amp/viz/mesh_decimation.hpp"
 #include "amp/viz/xml_escape.hpp"
@@ -96,9 +96,10 @@ std::string fit_meshes(world::SceneModel& model, std::size_t fixed_bytes, std::s
   for (auto& m : model.obstacles) m = cluster_vertices(m, cell);
   for (auto& m : model.robot_links) m = cluster_vertices(m, cell);
   std::ostringstream note;
-  note << "Meshes simplified for display to keep this page under " << max_bytes / 1'000'000
-       << " MB (vertex clustering, cells of " << core::number_text(cell) << "): " << before << " triangles shown as "
-       << triangle_count(model) << ". Collision checking used the full meshes.";
+  note << std::setprecision(3) << "Meshes simplified for display, the page being limited to "
+       << static_cast<double>(max_bytes) / 1e6 << " MB (--max-mb): vertex clustering on cubes of side " << cell
+       << ", " << before << " triangles shown as " << triangle_count(model)
+       << ". Collision checking used the full meshes.";
   return note.str();
 }
 

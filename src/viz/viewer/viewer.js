@@ -49,10 +49,18 @@
     return m;
   }
 
+  // The robot where the world hides it, faint and unshaded: drawn only where something nearer is
+  // already drawn (depth test "greater"), so that a robot inside a maze still shows through its
+  // walls while its visible parts keep their shading.
+  function hiddenMaterial(colour) {
+    return new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.45, depthWrite: false,
+                                         depthFunc: THREE.GreaterDepth });
+  }
+
   // One robot: a group of link meshes sharing the link geometries.
-  function makeRobot(geometries, colour, opacity) {
+  function makeRobot(geometries, colour, opacity, hidden) {
     const group = new THREE.Group();
-    const mat = material(colour, opacity);
+    const mat = hidden ? hiddenMaterial(colour) : material(colour, opacity);
     const links = geometries.map(function (g) {
       const mesh = new THREE.Mesh(g || new THREE.BufferGeometry(), mat);
       group.add(mesh);
@@ -127,19 +135,22 @@
     const poses = new Float32Array(buffer, meta.poses.offset, meta.poses.frames * meta.links.length * 7);
     const ghosts = [['start', kColours.start], ['goal', kColours.goal]];
     ghosts.forEach(function (ghost) {
-      const robot = makeRobot(linkGeometries, ghost[1], 0.35);
+      const robot = makeRobot(linkGeometries, ghost[1], 0.35, false);
       placeRobot(robot, new Float32Array(buffer, meta[ghost[0]], meta.links.length * 7), 0);
       robot.group.renderOrder = 1;
       scene.add(robot.group);
     });
     if (meta.trace[1] > 1) scene.add(lines(buffer, meta.trace, kColours.path, 1, false));
     if (meta.roadmap && meta.roadmap[1] > 0) scene.add(lines(buffer, meta.roadmap, kColours.roadmap, 0.55, true));
-    const robot = makeRobot(linkGeometries, kColours.robot, 1);
+    const robot = makeRobot(linkGeometries, kColours.robot, 1, false);
     scene.add(robot.group);
+    const hiddenRobot = makeRobot(linkGeometries, kColours.robot, 1, true);
+    hiddenRobot.group.renderOrder = 2;
+    scene.add(hiddenRobot.group);
 
     const controls = new THREE.OrbitControls(camera, renderer.domElement);
     return { meta: meta, renderer: renderer, scene: scene, camera: camera, controls: controls,
-             robot: robot, poses: poses, view: view, cut: cut, worldMaterial: worldMaterial };
+             robots: [robot, hiddenRobot], poses: poses, view: view, cut: cut, worldMaterial: worldMaterial };
   }
 
   // Moves the cut to the focus box's near side as seen from the camera: a point p of the world is
@@ -188,7 +199,7 @@
       slider.value = String(f);
       label.textContent = 'frame ' + (f + 1) + ' of ' + frames + ' · ' +
         (frames > 1 ? Math.round(100 * f / (frames - 1)) : 100) + '% of the path';
-      placeRobot(v.robot, v.poses, f * v.meta.links.length * 7);
+      v.robots.forEach(function (r) { placeRobot(r, v.poses, f * v.meta.links.length * 7); });
       render();
     }
     function tick(time) {
