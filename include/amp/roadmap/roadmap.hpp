@@ -55,6 +55,10 @@ class Roadmap {
   VertexId component(VertexId v) const;
   bool same_component(VertexId a, VertexId b) const { return component(a) == component(b); }
   std::size_t component_count() const;
+  // Whether an edge was removed since the components were last built: the next component query
+  // rebuilds them, O(V + E). A planner that can answer its question otherwise (a repaired search)
+  // asks this first.
+  bool components_stale() const { return components_stale_; }
 
  private:
   void refresh_components() const;

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "amp/core/error.hpp"
-#include "amp/roadmap/prm/astar.hpp"
+#include "amp/roadmap/prm/lifelong_astar.hpp"
 #include "amp/roadmap/local_planners/edge_certifier.hpp"
 #include "amp/roadmap/neighbors/kd_tree_neighbors.hpp"
 #include "amp/roadmap/prm/k_nearest_connection.hpp"
@@ -67,7 +67,7 @@ class PrmRun {
       result.status = status_for(core::StopReason::kNodeLimit);
     }
     while (room) {
-      if (seeds_connected() && find_path(result.path)) {
+      if (seeds_may_connect() && find_path(result.path)) {
         result.status = core::PlanStatus::kSolved;
         break;
       }
@@ -87,7 +87,11 @@ class PrmRun {
     result.edges = roadmap_->edge_count();
     result.components = roadmap_->component_count();
     result.extra["failed_samples"] = static_cast<double>(failed_samples_);
-    if (settings_.lazy) result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_ - refused_edges_);
+    if (settings_.lazy) {
+      result.extra["lazy_edges_removed"] = static_cast<double>(removed_edges_ - refused_edges_);
+      result.extra["lazy_path_searches"] = static_cast<double>(path_searches_);
+      result.extra["lazy_paths_rejected"] = static_cast<double>(rejected_paths_);
+    }
     result.extra["certify_refused_edges"] = static_cast<double>(refused_edges_);
     certifier_.report(result.extra);
     if (settings_.smooth) result.extra["shortcuts"] = static_cast<double>(shortcuts_);
@@ -110,11 +114,11 @@ class PrmRun {
       ++info.attempts;
       const bool joins = observer_ && !roadmap_->same_component(v, n.index);
       if (settings_.lazy) {
-        roadmap_->add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
+        add_edge(v, n.index, n.distance, EdgeCheck::kUnchecked);
       } else if (local_planner_->connect_edge(q, roadmap_->state(n.index),
                                               EdgeRequest{v, n.index, roadmap_->vertex_count()}) &&
                  (!certify_all() || certify_edge(v, n.index))) {
-        roadmap_->add_edge(v, n.index, n.distance, certify_all() ? EdgeCheck::kCertified : EdgeCheck::kValid);
+        add_edge(v, n.index, n.distance, certify_all() ? EdgeCheck::kCertified : EdgeCheck::kValid);
       } else {
         continue;
       }
@@ -126,6 +130,11 @@ class PrmRun {
     return v;
   }
 
+  // The union-find's answer while it is current. Once edges have been removed (Lazy PRM's failed
+  // edges, refused certificates) rebuilding it would cost O(V + E) after every removal, so the
+  // repaired search decides instead: it costs little when little changed.
+  bool seeds_may_connect() const { return roadmap_->components_stale() || seeds_connected(); }
+
   bool seeds_connected() const {
     for (std::size_t i = 1; i < seed_ids_.size(); ++i) {
       if (!roadmap_->same_component(seed_ids_[0], seed_ids_[i])) return false;
@@ -133,12 +142,34 @@ class PrmRun {
     return true;
   }
 
-  // Vertex path seed 0 -> seed 1 -> ...; segment_starts_ marks where each seed's leg begins.
+  // Every roadmap change goes through these two, so that each leg's search can repair itself.
+  void add_edge(VertexId a, VertexId b, double cost, EdgeCheck check) {
+    roadmap_->add_edge(a, b, cost, check);
+    for (LifelongAStar& leg : legs_) {
+      leg.touch(a);
+      leg.touch(b);
+    }
+  }
+  void remove_edge(VertexId a, VertexId b) {
+    roadmap_->remove_edge(a, b);
+    ++removed_edges_;
+    for (LifelongAStar& leg : legs_) {
+      leg.touch(a);
+      leg.touch(b);
+    }
+  }
+
+  // Vertex path seed 0 -> seed 1 -> ...; segment_starts_ marks where each seed's leg begins. Each
+  // leg keeps its search between calls and repairs it (LifelongAStar).
   bool search_all(std::vector<VertexId>& ids) {
+    if (legs_.empty()) {
+      for (std::size_t i = 1; i < seed_ids_.size(); ++i) legs_.emplace_back(seed_ids_[i - 1], seed_ids_[i]);
+    }
+    ++path_searches_;
     ids.assign(1, seed_ids_[0]);
     segment_starts_.assign(1, 0);
     for (std::size_t i = 1; i < seed_ids_.size(); ++i) {
-      if (!astar_.search(*roadmap_, ctx_.space, seed_ids_[i - 1], seed_ids_[i], leg_)) return false;
+      if (!legs_[i - 1].search(*roadmap_, ctx_.space, leg_)) return false;
       ids.insert(ids.end(), leg_.begin() + 1, leg_.end());
       segment_starts_.push_back(ids.size() - 1);
     }
@@ -160,35 +191,17 @@ class PrmRun {
     return certifier_.certify(*from, roadmap_->state(b));
   }
 
-  // A* through the seeds, then every edge of the candidate path is checked (Lazy PRM: its
-  // unchecked edges at the space's resolution) and certified, in order; at the first that fails it
-  // is removed and the search repeated. False when the seeds fall apart.
+  // A shortest path through the seeds, whose edges are then checked in two passes, each over the
+  // whole path: first every unchecked edge at the space's resolution (Lazy PRM's check), then, once
+  // none failed, every edge not yet certified. Every edge that fails a pass is removed, so one
+  // search's path costs one repair however many of its edges fail, and the search is repaired, not
+  // redone. False when the seeds fall apart.
   bool find_path(std::vector<State>& path) {
     std::vector<VertexId> ids;
     for (;;) {
-      if (!seeds_connected() || !search_all(ids)) return false;
-      bool valid = true;
-      for (std::size_t i = 1; i < ids.size(); ++i) {
-        const VertexId a = ids[i - 1], b = ids[i];
-        const EdgeCheck check = roadmap_->edge_check(a, b);
-        if (check == EdgeCheck::kCertified) continue;
-        if (check == EdgeCheck::kUnchecked && !local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
-          valid = false;
-        } else {
-          {
-            const core::PhaseScope query(ctx_.checker.counters(), core::Phase::kQuery);
-            valid = certify_edge(a, b);
-          }
-          if (!valid) ++refused_edges_;
-        }
-        if (!valid) {
-          roadmap_->remove_edge(a, b);
-          ++removed_edges_;
-          break;
-        }
-        roadmap_->mark(a, b, EdgeCheck::kCertified);
-      }
-      if (valid) break;
+      if (!search_all(ids)) return false;
+      if (check_unchecked_edges(ids) && certify_edges(ids)) break;
+      ++rejected_paths_;
       if (stop_.should_stop(roadmap_->vertex_count())) return false;  // the main loop reports why
     }
     path.clear();
@@ -200,6 +213,46 @@ class PrmRun {
       path.push_back(roadmap_->state(ids[i]));
     }
     return true;
+  }
+
+  // Lazy PRM's check of the path's unchecked edges; true when none failed. Each one checked is kept
+  // as valid or removed.
+  bool check_unchecked_edges(const std::vector<VertexId>& ids) {
+    bool all_valid = true;
+    for (std::size_t i = 1; i < ids.size(); ++i) {
+      const VertexId a = ids[i - 1], b = ids[i];
+      if (roadmap_->edge_check(a, b) != EdgeCheck::kUnchecked) continue;
+      if (local_planner_->connect(roadmap_->state(a), roadmap_->state(b))) {
+        roadmap_->mark(a, b, EdgeCheck::kValid);
+      } else {
+        remove_edge(a, b);
+        all_valid = false;
+      }
+    }
+    return all_valid;
+  }
+
+  // Certifies every edge of the path not yet certified; true when all were. Each one is kept as
+  // certified or removed.
+  bool certify_edges(const std::vector<VertexId>& ids) {
+    bool all_certified = true;
+    for (std::size_t i = 1; i < ids.size(); ++i) {
+      const VertexId a = ids[i - 1], b = ids[i];
+      if (roadmap_->edge_check(a, b) == EdgeCheck::kCertified) continue;
+      bool certified = false;
+      {
+        const core::PhaseScope query(ctx_.checker.counters(), core::Phase::kQuery);
+        certified = certify_edge(a, b);
+      }
+      if (certified) {
+        roadmap_->mark(a, b, EdgeCheck::kCertified);
+      } else {
+        ++refused_edges_;
+        remove_edge(a, b);
+        all_certified = false;
+      }
+    }
+    return all_certified;
   }
 
   // The local planner's states between a and b (none for straight edges). Each edge was made by
@@ -242,7 +295,7 @@ class PrmRun {
   std::unique_ptr<ConnectionStrategy> connection_;
   std::unique_ptr<InsertionObserver> observer_;
   EdgeCertifier certifier_;
-  AStar astar_;
+  std::vector<LifelongAStar> legs_;  // one search per seed-to-seed leg
   std::vector<Neighbor> neighbors_;
   std::vector<VertexId> seed_ids_;
   std::vector<VertexId> leg_;
@@ -252,6 +305,8 @@ class PrmRun {
   std::uint64_t failed_samples_ = 0;
   std::uint64_t removed_edges_ = 0;
   std::uint64_t refused_edges_ = 0;  // removed because certification failed
+  std::uint64_t path_searches_ = 0;  // searches for a candidate path (each a repair after the first)
+  std::uint64_t rejected_paths_ = 0;  // candidate paths found with an edge that failed
   int shortcuts_ = 0;
 };
 

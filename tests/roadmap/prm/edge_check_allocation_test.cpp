@@ -7,6 +7,7 @@
 #include "amp/roadmap/competence/grid_astar_planner.hpp"
 #include "amp/roadmap/local_planners/straight_line_planner.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 using amp::test::g_allocations;
 
@@ -14,7 +15,7 @@ namespace amp::roadmap {
 namespace {
 
 TEST(EdgeCheckAllocation, StraightLineEdgesOnTheBundledMazeAllocateNothingAfterWarmUp) {
-  const world::Problem p = world::load_problem(AMP_SOURCE_DIR "/problems/maze.yaml");
+  const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/maze.yaml");
   core::Counters counters;
   const auto checker = p.environment->make_checker(counters);
   StraightLinePlanner lp(*p.space, *checker);
@@ -38,7 +39,7 @@ TEST(EdgeCheckAllocation, StraightLineEdgesOnTheBundledMazeAllocateNothingAfterW
 // the largest search, searching again allocates nothing (none per expanded cell). On the planar arm,
 // whose checker allocates nothing (FCL's checks of the SCARA's cylinders do).
 TEST(EdgeCheckAllocation, GridAStarOnTheArmAllocatesNothingOnceGrown) {
-  const world::Problem p = world::load_problem(AMP_SOURCE_DIR "/problems/linkage.yaml");
+  const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/linkage.yaml");
   core::Counters counters;
   const auto checker = p.environment->make_checker(counters);
   GridAStarPlanner astar(*p.space, *checker);
