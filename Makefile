@@ -4,6 +4,11 @@ SAN_BUILD ?= build-sanitize
 JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 
+# Ninja where it is installed (scripts/install-deps.sh installs it): it schedules the two cores
+# better than make and logs each step's time (BUILD/.ninja_log). A tree already configured keeps
+# its generator.
+generator = $(if $(wildcard $(1)/CMakeCache.txt),,$(if $(shell command -v ninja 2>/dev/null),-G Ninja,))
+
 .PHONY: all deps configure build demo test timing arms slow bench sanitize sanitize-build fuzz install-check clean
 
 all: build
@@ -13,7 +18,7 @@ deps:
 	@bash scripts/install-deps.sh $(DEPS_FLAGS)
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake -S . -B $(BUILD) $(call generator,$(BUILD)) -DCMAKE_BUILD_TYPE=Release >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
@@ -62,7 +67,7 @@ bench: build
 # tests share one generated cover per build (tests/support/sphere_test_cache.hpp), so they run here too.
 sanitize-build: DEPS_FLAGS = --sanitize
 sanitize-build: deps
-	@cmake -S . -B $(SAN_BUILD) -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Debug \
+	@cmake -S . -B $(SAN_BUILD) $(call generator,$(SAN_BUILD)) -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Debug \
 	  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" -DAMP_FUZZ=ON -DAMP_BUILD_BENCHMARKS=OFF -DAMP_BUILD_PYTHON=OFF >/dev/null
 	@cmake --build $(SAN_BUILD) -j$(JOBS)
 

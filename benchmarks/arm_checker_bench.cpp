@@ -12,6 +12,7 @@
 #include "amp/core/rng.hpp"
 #include "amp/world/arm_environment.hpp"
 #include "amp/world/arm_problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

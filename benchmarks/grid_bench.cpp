@@ -12,6 +12,7 @@
 #include "amp/world/distance_transform.hpp"
 #include "amp/world/grid_environment.hpp"
 #include "amp/world/map_server_loader.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

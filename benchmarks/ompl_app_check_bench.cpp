@@ -12,6 +12,7 @@
 #include "amp/core/counters.hpp"
 #include "amp/core/rng.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

@@ -18,6 +18,7 @@
 #include "amp/nav/pgcs/pgcs_session.hpp"
 #include "amp/nav/pgcs/portal_graph.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

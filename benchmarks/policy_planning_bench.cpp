@@ -15,6 +15,7 @@
 #include "amp/world/grid_cost_to_go.hpp"
 #include "amp/world/inflation_cost.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

@@ -7,6 +7,7 @@
 
 #include "../tests/roadmap/test_worlds.hpp"
 #include "amp/roadmap/run.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

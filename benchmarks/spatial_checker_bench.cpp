@@ -12,6 +12,7 @@
 #include "amp/core/se3_space.hpp"
 #include "amp/world/ompl_cfg.hpp"
 #include "amp/world/spatial_environment.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

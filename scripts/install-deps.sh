@@ -14,7 +14,7 @@ for arg in "$@"; do
   esac
 done
 packages=(
-  build-essential cmake pkg-config lld
+  build-essential cmake pkg-config lld ninja-build ccache
   libeigen3-dev libfcl-dev libccd-dev libassimp-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-math-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev libpng-dev
   pybind11-dev python3-dev python3-numpy

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_errors_fixture.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

@@ -11,6 +11,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include "support/source_tree.hpp"
 
 namespace {
 

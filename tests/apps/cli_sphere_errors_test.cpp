@@ -14,6 +14,7 @@
 
 #include "support/cli_errors_fixture.hpp"
 #include "support/sphere_test_cache.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

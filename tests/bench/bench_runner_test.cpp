@@ -13,6 +13,7 @@
 #include "amp/bench/merge.hpp"
 #include "amp/core/error.hpp"
 #include "amp/core/rng.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "amp/bench/experiment.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

@@ -13,6 +13,7 @@
 
 #include "amp/bench/experiment.hpp"
 #include "amp/core/error.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

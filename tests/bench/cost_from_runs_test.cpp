@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "amp/bench/bench_runner.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

@@ -12,6 +12,7 @@
 #include "amp/core/error.hpp"
 #include "amp/nav/navigator_catalog.hpp"
 #include "amp/roadmap/catalog/planner_registry.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

@@ -19,6 +19,7 @@
 #include "amp/bench/merge.hpp"
 #include "amp/core/error.hpp"
 #include "amp/nav/navigator_catalog.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

@@ -19,6 +19,7 @@
 #include "amp/bench/runs_csv.hpp"
 #include "amp/bench/summary.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

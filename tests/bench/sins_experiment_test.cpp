@@ -12,6 +12,7 @@
 
 #include "amp/bench/bench_runner.hpp"
 #include "amp/bench/runs_csv.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench {
 namespace {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <system_error>
 #include <unistd.h>
+#include "support/source_tree.hpp"
 
 namespace amp::fuzz {
 namespace {

@@ -3,6 +3,7 @@
 #include "amp/bench/experiment.hpp"
 #include "amp/bench/runs_csv.hpp"
 #include "fuzz_input.hpp"
+#include "support/source_tree.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const amp::bench::Experiment experiment =

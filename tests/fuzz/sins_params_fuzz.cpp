@@ -13,6 +13,7 @@
 #include "amp/world/problem.hpp"
 #include "cli_util.hpp"
 #include "fuzz_input.hpp"
+#include "support/source_tree.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const amp::world::Problem arena =

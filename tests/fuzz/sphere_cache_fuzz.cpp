@@ -10,6 +10,7 @@
 #include "amp/world/arm_model.hpp"
 #include "amp/world/arm_spheres.hpp"
 #include "fuzz_input.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

@@ -7,6 +7,7 @@
 
 #include "amp/world/arm_model.hpp"
 #include "fuzz_input.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

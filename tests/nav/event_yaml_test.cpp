@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "amp/core/error.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::nav {
 namespace {

@@ -5,6 +5,7 @@
 #include "amp/core/error.hpp"
 #include "amp/nav/grid_nav_world.hpp"
 #include "amp/nav/polygon_nav_world.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::nav {
 namespace {

@@ -37,6 +37,7 @@
 #include "amp/world/arm_problem.hpp"
 #include "support/sanitizer_build.hpp"
 #include "world/arm/mesh_oracle.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp {
 namespace {

@@ -19,6 +19,7 @@
 #include "amp/core/counters.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp {
 namespace {

@@ -9,6 +9,7 @@
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -18,6 +18,7 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "support/time_allowance.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -20,6 +20,7 @@
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/world/problem.hpp"
 #include "support/planner_runs.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -7,6 +7,7 @@
 // entry left by an older generator cannot pass unnoticed. Writes are a rename into place, so tests
 // running in parallel may fill it at once.
 #include <filesystem>
+#include "support/source_tree.hpp"
 
 namespace amp::test {
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

@@ -14,6 +14,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace {
 

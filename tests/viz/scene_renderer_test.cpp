@@ -10,6 +10,7 @@
 #include "amp/viz/scene_renderer.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "roadmap/test_worlds.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::viz {
 namespace {

@@ -14,6 +14,7 @@
 #include "amp/viz/mesh_decimation.hpp"
 #include "amp/viz/viewer_page.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::viz {
 namespace {

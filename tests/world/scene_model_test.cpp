@@ -20,6 +20,7 @@
 #include "amp/world/spatial_environment.hpp"
 #include "roadmap/test_worlds.hpp"
 #include "support/state_of.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -54,7 +54,7 @@ TriangleMesh unit_cylinder(double radius, double length) {
 // Latitude-longitude sphere: two poles and kSphereStacks - 1 rings of kSphereSlices vertices.
 TriangleMesh unit_sphere(double radius) {
   TriangleMesh m;
-  const int slices = kSphereSlices, rings = kSphereStacks - 1;
+  constexpr int slices = kSphereSlices, rings = kSphereStacks - 1;
   const int south = add_vertex(m, {0.0, 0.0, -radius});
   for (int r = 0; r < rings; ++r) {
     const double polar = std::numbers::pi * (r + 1) / kSphereStacks;  // from the south pole
@@ -65,7 +65,7 @@ TriangleMesh unit_sphere(double radius) {
     }
   }
   const int north = add_vertex(m, {0.0, 0.0, radius});
-  auto at = [slices](int ring, int i) { return 1 + ring * slices + (i % slices); };
+  auto at = [](int ring, int i) { return 1 + ring * slices + (i % slices); };  // a constant: no capture
   for (int i = 0; i < slices; ++i) {
     m.triangles.emplace_back(south, at(0, i + 1), at(0, i));
     m.triangles.emplace_back(north, at(rings - 1, i), at(rings - 1, i + 1));

@@ -16,6 +16,7 @@
 #include "amp/core/version.hpp"
 #include "amp/bench/experiment.hpp"
 #include "amp/bench/trial_sink.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::bench::test {
 

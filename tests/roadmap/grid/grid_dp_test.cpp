@@ -16,6 +16,7 @@
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/world/grid_environment.hpp"
 #include "amp/world/problem.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

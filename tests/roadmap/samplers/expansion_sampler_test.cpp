@@ -14,6 +14,7 @@
 #include "amp/roadmap/run.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -18,6 +18,7 @@
 #include "amp/roadmap/samplers/uniform_sampler.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

@@ -11,12 +11,13 @@
 #include "amp/core/error.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {
 
 const world::Problem& walls() {
-  static const world::Problem p = world::load_problem(AMP_SOURCE_DIR "/problems/walls.yaml");
+  static const world::Problem p = world::load_problem(std::string(AMP_SOURCE_DIR) + "/problems/walls.yaml");
   return p;
 }
 

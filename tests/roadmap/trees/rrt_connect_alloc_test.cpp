@@ -18,6 +18,7 @@
 #include "amp/world/arm_problem.hpp"
 #include "amp/world/problem.hpp"
 #include "support/sphere_test_cache.hpp"
+#include "support/source_tree.hpp"
 
 using amp::test::g_allocations;
 

@@ -14,6 +14,7 @@
 #include "amp/roadmap/catalog/planner_registry.hpp"
 #include "amp/world/problem.hpp"
 #include "roadmap/test_worlds.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::roadmap {
 namespace {

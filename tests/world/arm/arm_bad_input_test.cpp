@@ -16,6 +16,7 @@
 #include "amp/world/arm_model.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "amp/world/moveit_files.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -14,6 +14,7 @@
 
 #include "amp/core/rng.hpp"
 #include "world/arm/kdl_chain.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -10,6 +10,7 @@
 
 #include "amp/world/arm_problem.hpp"
 #include "support/state_of.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "world/arm/kdl_chain.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::test {
 

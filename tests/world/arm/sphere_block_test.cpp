@@ -19,6 +19,7 @@
 #include "amp/world/arm_environment.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "support/sphere_test_cache.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -17,6 +17,7 @@
 #include "amp/roadmap/local_planners/straight_line_planner.hpp"
 #include "amp/world/arm_problem.hpp"
 #include "support/sphere_test_cache.hpp"
+#include "support/source_tree.hpp"
 
 using amp::test::g_allocations;
 

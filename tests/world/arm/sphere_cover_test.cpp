@@ -21,6 +21,7 @@
 #include "amp/world/arm_model.hpp"
 #include "amp/world/arm_spheres.hpp"
 #include "support/sphere_test_cache.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -24,6 +24,7 @@
 #include "amp/world/arm_srdf.hpp"
 #include "amp/world/moveit_files.hpp"
 #include "support/state_of.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

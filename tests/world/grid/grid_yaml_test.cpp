@@ -11,6 +11,7 @@
 #include "amp/core/error.hpp"
 #include "amp/world/grid_environment.hpp"
 #include "amp/world/grid_yaml.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "amp/core/error.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

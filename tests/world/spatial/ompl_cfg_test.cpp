@@ -12,6 +12,7 @@
 #include "amp/core/error.hpp"
 #include "amp/world/polygon_geometry.hpp"
 #include "amp/world/spatial_environment.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {

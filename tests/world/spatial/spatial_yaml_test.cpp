@@ -6,6 +6,7 @@
 
 #include "amp/core/error.hpp"
 #include "amp/world/spatial_environment.hpp"
+#include "support/source_tree.hpp"
 
 namespace amp::world {
 namespace {
