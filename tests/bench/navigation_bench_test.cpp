@@ -19,6 +19,7 @@
 #include "amp/bench/merge.hpp"
 #include "amp/core/error.hpp"
 #include "amp/nav/navigator_catalog.hpp"
+#include "support/sanitizer_build.hpp"
 #include "support/source_tree.hpp"
 
 namespace amp::bench {
@@ -30,6 +31,12 @@ namespace fs = std::filesystem;
 // numbers that legitimately differ between two runs of one trial.
 bool is_timing(const std::string& name) { return name.size() > 2 && name.ends_with("_s"); }
 
+// Runs per planner and pgcs's exploration steps: 2 runs of 750 steps under the sanitizers (the same
+// threads, shards, merge and resume on fewer, shorter runs), 3 of 3000 otherwise.
+constexpr int kRuns = test::kSanitizerBuild ? 2 : 3;
+constexpr int kPgcsSteps = test::kSanitizerBuild ? 750 : 3000;
+constexpr unsigned kTrials = 2 * kRuns;  // prm and pgcs
+
 class NavigationBenchTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -40,10 +47,11 @@ class NavigationBenchTest : public ::testing::Test {
     fs::create_directories(root_);
     const fs::path office = fs::path(AMP_SOURCE_DIR) / "problems" / "office-map.yaml";
     // A time limit that never binds, so results do not depend on the machine's load.
-    std::ofstream(root_ / "exp.yaml") << "name: nav\nseed: 17\nruns: 3\ntime_limit: 600\nnode_limit: 20000\n"
+    std::ofstream(root_ / "exp.yaml") << "name: nav\nseed: 17\nruns: " << kRuns
+                                      << "\ntime_limit: 600\nnode_limit: 20000\n"
                                       << "cost: replans\nproblems: [" << office.string() << "]\nplanners:\n"
-                                      << "  - prm\n  - {name: pgcs-small, planner: pgcs, params: {steps: 3000, "
-                                         "queries: 3}}\n";
+                                      << "  - prm\n  - {name: pgcs-small, planner: pgcs, params: {steps: " << kPgcsSteps
+                                      << ", queries: 3}}\n";
   }
   void TearDown() override {
     if (!root_.empty()) fs::remove_all(root_);
@@ -106,7 +114,7 @@ class NavigationBenchTest : public ::testing::Test {
 TEST_F(NavigationBenchTest, ThreadsDoNotChangeTheResultsAndMetricsReachEveryOutput) {
   const BenchResult a = run(root_ / "one", 1);
   run(root_ / "two", 2);
-  EXPECT_EQ(a.written, 6u);
+  EXPECT_EQ(a.written, kTrials);
   EXPECT_EQ(csv_without_time(root_ / "one"), csv_without_time(root_ / "two"));
   EXPECT_EQ(cost_summary(root_ / "one"), cost_summary(root_ / "two"));
 
@@ -120,9 +128,10 @@ TEST_F(NavigationBenchTest, ThreadsDoNotChangeTheResultsAndMetricsReachEveryOutp
   }
   EXPECT_EQ(pgcs["metrics"]["queries"]["mean"], 3.0);
   EXPECT_EQ(pgcs["cost"]["metric"], "replans");
-  EXPECT_EQ(pgcs["cost"]["n"], 3);
+  EXPECT_EQ(pgcs["cost"]["n"], kRuns);
   // prm reports no replans: the tests say so instead of comparing a part of the runs.
-  EXPECT_EQ(problem["tests"]["skipped"], "metric 'replans' missing in runs (3 of 'prm')");
+  EXPECT_EQ(problem["tests"]["skipped"],
+            "metric 'replans' missing in runs (" + std::to_string(kRuns) + " of 'prm')");
 
   // results.db: the extras are per-run properties (columns of `runs`), NULL for the planner's rows.
   sqlite3* db = nullptr;
@@ -131,8 +140,8 @@ TEST_F(NavigationBenchTest, ThreadsDoNotChangeTheResultsAndMetricsReachEveryOutp
   ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT COUNT(replans), COUNT(*) FROM runs", -1, &st, nullptr), SQLITE_OK)
       << sqlite3_errmsg(db);
   ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int(st, 0), 3);
-  EXPECT_EQ(sqlite3_column_int(st, 1), 6);
+  EXPECT_EQ(sqlite3_column_int(st, 0), kRuns);
+  EXPECT_EQ(sqlite3_column_int(st, 1), static_cast<int>(kTrials));
   sqlite3_finalize(st);
   sqlite3_close(db);
 }
@@ -144,17 +153,18 @@ TEST_F(NavigationBenchTest, MergedShardsAndAResumedRunEqualTheSingleProcessRun) 
     shards.push_back(root_ / ("shard" + std::to_string(i)));
     run(shards.back(), 1, Shard{i, 2});
   }
-  EXPECT_EQ(merge_results({shards[1], shards[0]}, root_ / "merged", false, false), 6u);
+  EXPECT_EQ(merge_results({shards[1], shards[0]}, root_ / "merged", false, false), kTrials);
   EXPECT_EQ(csv_without_time(root_ / "single"), csv_without_time(root_ / "merged"));
   EXPECT_EQ(cost_summary(root_ / "single"), cost_summary(root_ / "merged"));
 
   std::atomic<bool> cancel{false};
   const BenchResult cut = run(root_ / "resumed", 1, {}, &cancel, [&](const Progress& p) {
-    if (p.done >= 4) cancel = true;  // as Ctrl-C after the planner's runs and one navigation run
+    // As Ctrl-C after the planner's runs and one navigation run.
+    if (p.done >= static_cast<std::size_t>(kRuns) + 1) cancel = true;
   });
   EXPECT_TRUE(cut.interrupted);
   const BenchResult rest = run(root_ / "resumed", 2, {}, nullptr, {}, true);
-  EXPECT_EQ(rest.written, 6u);
+  EXPECT_EQ(rest.written, kTrials);
   EXPECT_EQ(csv_without_time(root_ / "single"), csv_without_time(root_ / "resumed"));
   EXPECT_EQ(cost_summary(root_ / "single"), cost_summary(root_ / "resumed"));
 }

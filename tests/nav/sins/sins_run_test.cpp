@@ -12,6 +12,7 @@
 #include "amp/learn/case_library.hpp"
 #include "amp/nav/polygon_nav_world.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
+#include "support/sanitizer_build.hpp"
 
 namespace amp::nav {
 namespace {
@@ -96,7 +97,7 @@ TEST(SinsRunWorld, StopsAtTheStepLimitUnsolved) {
 TEST(SinsRunWorld, NeverPassesThroughAnObstacleAndReachesWhatItSays) {
   SinsSettings s;
   s.step_limit = 400;
-  s.worlds = 6;
+  s.worlds = test::case_share(6);  // 2 worlds per system under the sanitizers
   for (const char* system : {"static", "random", "adaptive", "sins-plus"}) {
     auto policy = make_parameter_policy(system, {}, SchemaParameters::middle(), 0.3);
     ClutterWorldSequence sequence(17, s.world);
@@ -126,7 +127,7 @@ TEST(SinsRunWorld, NeverPassesThroughAnObstacleAndReachesWhatItSays) {
 
 TEST(SinsRunSequence, TheSameSeedGivesTheSameRunAndEverySystemTheSameWorlds) {
   SinsSettings s;
-  s.worlds = 5;
+  s.worlds = test::case_share(5);  // 2 worlds under the sanitizers
   s.step_limit = 300;
   auto run = [&](const char* system) {
     auto policy = make_parameter_policy(system, {}, SchemaParameters::middle(), 0.3);
@@ -139,7 +140,7 @@ TEST(SinsRunSequence, TheSameSeedGivesTheSameRunAndEverySystemTheSameWorlds) {
     EXPECT_EQ(plus.worlds[i].distance, plus_again.worlds[i].distance);
     EXPECT_EQ(plus.worlds[i].optimal, st.worlds[i].optimal);
   }
-  ASSERT_EQ(a.worlds.size(), 5u);
+  ASSERT_EQ(a.worlds.size(), static_cast<std::size_t>(s.worlds));
   for (std::size_t i = 0; i < a.worlds.size(); ++i) {
     EXPECT_EQ(a.worlds[i].solved, b.worlds[i].solved);
     EXPECT_EQ(a.worlds[i].steps, b.worlds[i].steps);
