@@ -15,7 +15,6 @@
 #include "amp/core/rng.hpp"
 #include "amp/learn/case_library.hpp"
 #include "amp/nav/sins/parameter_policy.hpp"
-#include "support/sanitizer_build.hpp"
 
 namespace amp::bench {
 namespace {
@@ -108,9 +107,6 @@ TEST(SinsCalibration, TargetOutsideTheBracketIsOneLine) {
   SinsCalibrationSettings c = quick();
   c.static_target = 0.99;
   c.bisections = 0;
-  // Under the sanitizers the two ends are probed on 3 worlds instead of 12: the static system's
-  // share at either end still falls short of 99%.
-  if (test::kSanitizerBuild) c.base.worlds = 3;
   const SinsCalibration r = calibrate_sins_scale(c);
   EXPECT_FALSE(r.reached);
   EXPECT_THAT(r.why, HasSubstr("its target 99.0% is not between"));
